@@ -1,0 +1,102 @@
+#include "brep/boundary_sampling.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Curve2d.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GCPnts_UniformAbscissa.hxx>
+#include <cmath>
+
+#include "geometry/error.h"
+#include "geometry/occt_bridge.h"
+
+namespace holefill {
+
+SurfaceJet supportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t) {
+  BRepAdaptor_Curve2d pc(edge, face);
+  const gp_Pnt2d uv = pc.Value(t);
+  BRepAdaptor_Surface s(face, Standard_False);
+  return faceJet(s, face.Orientation() == TopAbs_REVERSED, uv.X(), uv.Y());
+}
+
+bool supportNormal(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, Eigen::Vector3d& n) {
+  return unitNormal(supportJet(edge, face, t), n);
+}
+
+namespace {
+
+// Parameters of n+1 points uniform in arc length over [first, last].
+std::vector<double> uniformAbscissa(const BRepAdaptor_Curve& c, int n) {
+  std::vector<double> ts;
+  GCPnts_UniformAbscissa ua(c, n + 1, c.FirstParameter(), c.LastParameter());
+  if (ua.IsDone() && ua.NbPoints() == n + 1) {
+    for (int i = 1; i <= ua.NbPoints(); ++i) ts.push_back(ua.Parameter(i));
+  } else {  // very short or irregular curves: uniform in parameter
+    for (int i = 0; i <= n; ++i) ts.push_back(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * i / n);
+  }
+  ts.front() = c.FirstParameter();
+  ts.back() = c.LastParameter();
+  return ts;
+}
+
+// Total turning of the tangent along the curve, probed at fixed resolution.
+double turningAngle(const BRepAdaptor_Curve& c) {
+  const int probes = 256;
+  double total = 0.0;
+  gp_Pnt p;
+  gp_Vec prev, d;
+  for (int i = 0; i <= probes; ++i) {
+    c.D1(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * i / probes, p, d);
+    if (i > 0 && prev.Magnitude() > 0 && d.Magnitude() > 0) total += prev.Angle(d);
+    prev = d;
+  }
+  return total;
+}
+
+}  // namespace
+
+std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySamplingOptions& opt) {
+  HF_CHECK(!hole.edges.empty(), "the hole has no edges");
+  std::vector<BoundarySample> out;
+  for (size_t k = 0; k < hole.edges.size(); ++k) {
+    const HoleEdge& he = hole.edges[k];
+    BRepAdaptor_Curve c(he.edge);
+    const double len = GCPnts_AbscissaPoint::Length(c);
+    int n = std::max(opt.minSamplesPerEdge, static_cast<int>(std::ceil(turningAngle(c) / opt.angularStep)));
+    n = std::min(n, std::max(opt.maxSamplesPerEdge, opt.minSamplesPerEdge));
+    std::vector<double> ts = uniformAbscissa(c, n);
+    const bool reversed = he.edge.Orientation() == TopAbs_REVERSED;
+    if (reversed) std::reverse(ts.begin(), ts.end());
+    for (size_t i = 0; i < ts.size(); ++i) {
+      BoundarySample s;
+      s.t = ts[i];
+      s.edge = static_cast<int>(k);
+      gp_Pnt p;
+      gp_Vec d1;
+      c.D1(s.t, p, d1);
+      s.point = toEigen(p);
+      Eigen::Vector3d tan = toEigen(d1);
+      if (tan.norm() < 1e-12) {  // singular parametrization: use a chord
+        const double h = 1e-6 * (c.LastParameter() - c.FirstParameter());
+        const double t2 = s.t + (s.t + h <= c.LastParameter() ? h : -h);
+        tan = (toEigen(c.Value(t2)) - s.point) * (t2 > s.t ? 1.0 : -1.0);
+      }
+      s.tangent = tan.normalized() * (reversed ? -1.0 : 1.0);
+      s.weight = len / n * ((i == 0 || i + 1 == ts.size()) ? 0.5 : 1.0);
+      const SurfaceJet j = supportJet(he.edge, he.support, s.t);
+      s.normalValid = unitNormal(j, s.normal);
+      if (s.normalValid) {
+        // The hole interior is to the left of the traversal about the support normal.
+        s.across = s.normal.cross(s.tangent).normalized();
+        s.curvature = normalCurvature(j, s.normal, s.across);
+      } else {
+        s.normal.setZero();
+        s.across.setZero();
+      }
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
+}  // namespace holefill

@@ -1,0 +1,99 @@
+#include "brep/continuity_report.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Curve2d.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
+#include <Extrema_ExtPC.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <cmath>
+
+#include "brep/boundary_sampling.h"
+#include "geometry/error.h"
+#include "geometry/occt_bridge.h"
+#include "geometry/tolerances.h"
+
+namespace holefill {
+
+std::string ContinuityReport::achieved(double t0, double t1, double t2) const {
+  if (!(g0 <= t0)) return "none";
+  if (!(g1 <= t1)) return "G0";
+  if (!(g2 <= t2)) return "G1";
+  return "G2";
+}
+
+ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, const ContinuityOptions& opt) {
+  HF_CHECK(!face.IsNull(), "no face to report on");
+  ContinuityReport r;
+  r.scale = hole.scale;
+  for (const auto& he : hole.edges) r.edges.push_back({he.edgeIndex, 0, 0, 0});
+  std::vector<BRepAdaptor_Curve> curves;
+  for (const auto& he : hole.edges) curves.emplace_back(he.edge);
+  BRepAdaptor_Surface fs(face, Standard_False);
+  const bool frev = face.Orientation() == TopAbs_REVERSED;
+  for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+    const TopoDS_Edge E = TopoDS::Edge(ex.Current());
+    if (BRep_Tool::Degenerated(E)) continue;
+    BRepAdaptor_Curve2d pc(E, face);
+    const double a = pc.FirstParameter(), b = pc.LastParameter();
+    for (int i = 0; i <= opt.samplesPerEdge; ++i) {
+      const double t = a + (b - a) * i / opt.samplesPerEdge;
+      const gp_Pnt2d uv = pc.Value(t);
+      const SurfaceJet jf = faceJet(fs, frev, uv.X(), uv.Y());
+      // Nearest point of the hole boundary.
+      int best = -1;
+      double bestD = 1e300, bestT = 0;
+      for (size_t k = 0; k < curves.size(); ++k) {
+        Extrema_ExtPC ext(toPnt(jf.p), curves[k]);
+        if (ext.IsDone())
+          for (int m = 1; m <= ext.NbExt(); ++m)
+            if (ext.SquareDistance(m) < bestD) { bestD = ext.SquareDistance(m); best = int(k); bestT = ext.Point(m).Parameter(); }
+        for (double te : {curves[k].FirstParameter(), curves[k].LastParameter()}) {
+          const double d = curves[k].Value(te).SquareDistance(toPnt(jf.p));
+          if (d < bestD) { bestD = d; best = int(k); bestT = te; }
+        }
+      }
+      if (best < 0) continue;
+      const HoleEdge& he = hole.edges[best];
+      const double g0 = std::sqrt(bestD);
+      double g1 = 0, g2 = 0;
+      Eigen::Vector3d nf, nb;
+      const SurfaceJet jb = supportJet(he.edge, he.support, bestT);
+      if (unitNormal(jb, nb) && unitNormal(jf, nf)) {
+        g1 = std::acos(std::min(1.0, std::abs(nf.dot(nb))));
+        gp_Pnt p;
+        gp_Vec d1;
+        curves[best].D1(bestT, p, d1);
+        if (d1.Magnitude() > 1e-12) {
+          const Eigen::Vector3d T = toEigen(d1).normalized();
+          const Eigen::Vector3d acrossB = nb.cross(T).normalized();
+          const Eigen::Vector3d nfa = nf.dot(nb) < 0 ? Eigen::Vector3d(-nf) : nf;
+          const Eigen::Vector3d acrossF = nfa.cross(T).normalized();
+          const double kb = normalCurvature(jb, nb, acrossB), kf = normalCurvature(jf, nfa, acrossF);
+          g2 = std::abs(kf - kb) / std::max(std::abs(kb), 1.0 / std::max(r.scale, 1e-300));
+        }
+      } else {
+        g1 = M_PI / 2;  // singular normal on one side: no tangent plane to agree on
+      }
+      ++r.samples;
+      r.g0 = std::max(r.g0, g0);
+      r.g1 = std::max(r.g1, g1);
+      r.g2 = std::max(r.g2, g2);
+      auto& ec = r.edges[best];
+      ec.g0 = std::max(ec.g0, g0);
+      ec.g1 = std::max(ec.g1, g1);
+      ec.g2 = std::max(ec.g2, g2);
+    }
+  }
+  if (r.samples == 0) throw Error("the face has no boundary edges to compare with the hole");
+  r.g0Relative = r.scale > 0 ? r.g0 / r.scale : r.g0;
+  r.g0Strict = r.g0Relative <= tol::kG0Strict;
+  r.g0Loose = r.g0Relative <= tol::kG0Loose;
+  r.g1Strict = r.g1 <= tol::kG1Strict;
+  r.g1Loose = r.g1 <= tol::kG1Loose;
+  r.g2Ok = r.g2 <= tol::kG2Tier;
+  return r;
+}
+
+}  // namespace holefill

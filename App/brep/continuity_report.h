@@ -1,0 +1,42 @@
+// Continuity report of a filling face against the hole it fills, exactly as
+// DESIGN.md defines the metrics: along the face's boundary (>= 50 samples per
+// edge, taken on the face's own trimming curves S_F(pcurve(t))), each sample is
+// matched to the nearest point B(t) of the hole's boundary edges and its support face:
+//   G0 = max |F - B| (and / scale),  G1 = max angle(n_F, ±n_B),
+//   G2 = max |κ_F - κ_B| / max(|κ_B|, 1/scale), κ along the direction across the boundary;
+// scale = bounding-box diagonal of the hole boundary. The same function measures our
+// fills and a peer's (FreeCAD Surface Filling), so benchmarks compare like with like.
+#pragma once
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <string>
+#include <vector>
+
+#include "brep/hole_detection.h"
+
+namespace holefill {
+
+struct EdgeContinuity {
+  int edgeIndex = 0;  // hole edge (FreeCAD Edge<k> of the model)
+  double g0 = 0, g1 = 0, g2 = 0;
+};
+
+struct ContinuityReport {
+  int samples = 0;
+  double scale = 0;
+  double g0 = 0, g0Relative = 0, g1 = 0, g2 = 0;
+  bool g0Strict = false, g0Loose = false, g1Strict = false, g1Loose = false, g2Ok = false;  // STR tiers
+  std::vector<EdgeContinuity> edges;
+  // Highest level k with G0 <= g0Tolerance and (k>=1: G1 <= g1Tolerance) and (k>=2: G2 <= g2Tolerance); "none" if G0 fails.
+  std::string achieved(double g0Tolerance, double g1Tolerance, double g2Tolerance) const;
+};
+
+struct ContinuityOptions {
+  int samplesPerEdge = 50;   // per edge of the filling face
+};
+
+// `hole` is a hole of `model` (by detectHoles); `face` may or may not share its edges.
+ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, const ContinuityOptions& options = {});
+
+}  // namespace holefill

@@ -1,0 +1,145 @@
+#include "brep/face_building.h"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepGProp.hxx>
+#include <BRepLib.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom2dAPI_Interpolate.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_HArray1OfPnt2d.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <algorithm>
+#include <map>
+
+#include "geometry/error.h"
+#include "geometry/occt_bridge.h"
+
+namespace holefill {
+
+FaceBuildResult buildTrimmedFace(const Hole& hole, const Handle(Geom_BSplineSurface)& surface,
+                                 const std::vector<BoundarySample>& samples, const std::vector<Eigen::Vector2d>& uv) {
+  HF_CHECK(samples.size() == uv.size(), "one pcurve point per boundary sample");
+  BRep_Builder B;
+  FaceBuildResult res;
+  B.MakeFace(res.face, surface, Precision::Confusion());
+  TopoDS_Wire wire;
+  B.MakeWire(wire);
+  for (size_t k = 0; k < hole.edges.size(); ++k) {
+    const TopoDS_Edge& E = hole.edges[k].edge;
+    std::vector<std::pair<double, Eigen::Vector2d>> pts;
+    for (size_t i = 0; i < samples.size(); ++i)
+      if (samples[i].edge == static_cast<int>(k)) pts.emplace_back(samples[i].t, uv[i]);
+    std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    HF_CHECK(pts.size() >= 2, "an edge of the hole has fewer than two samples");
+    Handle(TColgp_HArray1OfPnt2d) P = new TColgp_HArray1OfPnt2d(1, static_cast<int>(pts.size()));
+    Handle(TColStd_HArray1OfReal) T = new TColStd_HArray1OfReal(1, static_cast<int>(pts.size()));
+    for (size_t i = 0; i < pts.size(); ++i) {
+      P->SetValue(static_cast<int>(i) + 1, gp_Pnt2d(pts[i].second.x(), pts[i].second.y()));
+      T->SetValue(static_cast<int>(i) + 1, pts[i].first);
+    }
+    Geom2dAPI_Interpolate interp(P, T, Standard_False, 1e-12);
+    interp.Perform();
+    if (!interp.IsDone()) throw Error("could not build the pcurve of Edge" + std::to_string(hole.edges[k].edgeIndex));
+    Handle(Geom2d_BSplineCurve) pc = interp.Curve();
+    // Measure the gap between the edge's curve and its new curve on surface.
+    BRepAdaptor_Curve c(E);
+    double dev = 0.0;
+    const int checks = 4 * static_cast<int>(pts.size());
+    for (int i = 0; i <= checks; ++i) {
+      const double t = c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * i / checks;
+      const gp_Pnt2d q = pc->Value(t);
+      dev = std::max(dev, c.Value(t).Distance(surface->Value(q.X(), q.Y())));
+    }
+    res.maxEdgeDeviation = std::max(res.maxEdgeDeviation, dev);
+    const double tol = std::max(BRep_Tool::Tolerance(E), 1.5 * dev + Precision::Confusion());
+    B.UpdateEdge(E, pc, res.face, tol);
+    B.UpdateEdge(E, tol);
+    TopoDS_Vertex v0, v1;
+    TopExp::Vertices(E, v0, v1);
+    for (const TopoDS_Vertex& v : {v0, v1})
+      if (!v.IsNull() && BRep_Tool::Tolerance(v) < tol) B.UpdateVertex(v, tol);
+    B.Add(wire, E);
+  }
+  wire.Closed(Standard_True);
+  B.Add(res.face, wire);
+  return res;
+}
+
+SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face) {
+  // The faces connected to the new face through shared edges form its shell.
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(model, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  TopTools_IndexedMapOfShape faces, inShell;
+  TopExp::MapShapes(model, TopAbs_FACE, faces);
+  std::vector<TopoDS_Shape> queue;
+  for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
+    if (edgeFaces.Contains(ex.Current()))
+      for (const TopoDS_Shape& f : edgeFaces.FindFromKey(ex.Current()))
+        if (inShell.Add(f) > 0) queue.push_back(f);
+  while (!queue.empty()) {
+    const TopoDS_Shape f = queue.back();
+    queue.pop_back();
+    for (TopExp_Explorer ex(f, TopAbs_EDGE); ex.More(); ex.Next())
+      for (const TopoDS_Shape& g : edgeFaces.FindFromKey(ex.Current()))
+        if (!inShell.Contains(g)) { inShell.Add(g); queue.push_back(g); }
+  }
+  BRep_Builder B;
+  TopoDS_Shell shell;
+  B.MakeShell(shell);
+  std::vector<TopoDS_Shape> others;
+  TopTools_IndexedMapOfShape added;
+  for (TopExp_Explorer ex(model, TopAbs_FACE); ex.More(); ex.Next()) {
+    if (added.Contains(ex.Current())) continue;
+    added.Add(ex.Current());
+    if (inShell.Contains(ex.Current())) B.Add(shell, ex.Current());
+    else others.push_back(ex.Current());
+  }
+  B.Add(shell, face);
+  // Closed when every edge of the shell is used by exactly two faces (seams count twice).
+  TopTools_IndexedDataMapOfShapeListOfShape shellEdges;
+  TopExp::MapShapesAndAncestors(shell, TopAbs_EDGE, TopAbs_FACE, shellEdges);
+  bool closed = true;
+  for (int i = 1; i <= shellEdges.Extent() && closed; ++i)
+    closed = BRep_Tool::Degenerated(TopoDS::Edge(shellEdges.FindKey(i))) || shellEdges(i).Extent() == 2;
+  shell.Closed(closed);
+  SewResult res;
+  TopoDS_Shape main = shell;
+  if (closed) {
+    BRepBuilderAPI_MakeSolid ms(shell);
+    if (ms.IsDone()) {
+      TopoDS_Solid solid = ms.Solid();
+      BRepLib::OrientClosedSolid(solid);
+      GProp_GProps props;
+      BRepGProp::VolumeProperties(solid, props);
+      res.volume = props.Mass();
+      res.closedSolid = true;
+      main = solid;
+    }
+  }
+  if (others.empty()) {
+    res.shape = main;
+  } else {
+    TopoDS_Compound comp;
+    B.MakeCompound(comp);
+    B.Add(comp, main);
+    for (const auto& o : others) B.Add(comp, o);
+    res.shape = comp;
+  }
+  return res;
+}
+
+}  // namespace holefill

@@ -1,0 +1,40 @@
+// Face building and sewing: the filling surface becomes a trimmed TopoDS_Face
+// whose outer wire REUSES the hole's own edges (a pcurve on the new surface is
+// added to each), so it shares those edges with the model and sews exactly; the
+// face and the faces connected to it form a new shell, and a solid when that
+// shell closes. Edge and vertex tolerances are raised to the measured distance
+// between each edge's 3D curve and its new curve on surface, never lowered.
+//
+// The model passed in must be the caller's private copy: adding pcurves changes
+// the shared edges (FillHole works on a BRepBuilderAPI_Copy of the user's shape).
+#pragma once
+
+#include <Eigen/Dense>
+#include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <vector>
+
+#include "brep/boundary_sampling.h"
+#include "brep/hole_detection.h"
+
+namespace holefill {
+
+struct FaceBuildResult {
+  TopoDS_Face face;
+  double maxEdgeDeviation = 0.0;  // max |C(t) - S(pcurve(t))| over dense checks (model units)
+};
+
+// uv[k] is the (model-domain) pcurve point of samples[k]; one pcurve per edge interpolates them in t.
+FaceBuildResult buildTrimmedFace(const Hole& hole, const Handle(Geom_BSplineSurface)& surface,
+                                 const std::vector<BoundarySample>& samples, const std::vector<Eigen::Vector2d>& uv);
+
+struct SewResult {
+  TopoDS_Shape shape;      // the model with the face added: shell, solid, or compound when the model had other parts
+  bool closedSolid = false;
+  double volume = 0.0;     // when closedSolid
+};
+
+SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face);
+
+}  // namespace holefill

@@ -1,0 +1,188 @@
+#include "brep/shape_io.h"
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Reader.hxx>
+#include <STEPControl_Writer.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <signal.h>
+#include <sstream>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "geometry/error.h"
+#include "geometry/tolerances.h"
+
+namespace holefill {
+
+namespace {
+
+std::string extensionOf(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(e.begin(), e.end(), e.begin(), ::tolower);
+  return e;
+}
+
+bool finitePoint(const gp_Pnt& p) {
+  return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z()) &&
+         std::abs(p.X()) < tol::kMaxCoordinate && std::abs(p.Y()) < tol::kMaxCoordinate &&
+         std::abs(p.Z()) < tol::kMaxCoordinate;
+}
+
+TopoDS_Shape readInProcess(const std::string& path, const std::string& ext) {
+  TopoDS_Shape shape;
+  if (ext == "brep" || ext == "brp") {
+    BRep_Builder b;
+    if (!BRepTools::Read(shape, path.c_str(), b) || shape.IsNull())
+      throw Error("cannot read '" + path + "': not a valid BREP file");
+  } else if (ext == "step" || ext == "stp") {
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw Error("cannot read '" + path + "': not a valid STEP file");
+    reader.TransferRoots();
+    shape = reader.OneShape();
+    if (shape.IsNull()) throw Error("'" + path + "' holds no shape");
+  } else {
+    throw Error("unsupported file type '" + ext + "' of '" + path + "': use .brep or .step");
+  }
+  return shape;
+}
+
+}  // namespace
+
+void validateShape(const TopoDS_Shape& shape) {
+  if (shape.IsNull()) throw Error("the shape is empty");
+  TopTools_IndexedMapOfShape vs, es, fs;
+  TopExp::MapShapes(shape, TopAbs_VERTEX, vs);
+  TopExp::MapShapes(shape, TopAbs_EDGE, es);
+  TopExp::MapShapes(shape, TopAbs_FACE, fs);
+  for (int i = 1; i <= vs.Extent(); ++i)
+    if (!finitePoint(BRep_Tool::Pnt(TopoDS::Vertex(vs(i)))))
+      throw Error("the shape has a vertex with NaN, infinite or absurd coordinates (Vertex" + std::to_string(i) + ")");
+  for (int i = 1; i <= es.Extent(); ++i) {
+    Standard_Real a, b;
+    Handle(Geom_Curve) c = BRep_Tool::Curve(TopoDS::Edge(es(i)), a, b);
+    if (c.IsNull()) continue;
+    if (!std::isfinite(a) || !std::isfinite(b)) throw Error("Edge" + std::to_string(i) + " has a non-finite range");
+    Handle(Geom_BSplineCurve) bc = Handle(Geom_BSplineCurve)::DownCast(c);
+    if (!bc.IsNull())
+      for (int k = 1; k <= bc->NbPoles(); ++k)
+        if (!finitePoint(bc->Pole(k))) throw Error("Edge" + std::to_string(i) + " has NaN or infinite poles");
+  }
+  for (int i = 1; i <= fs.Extent(); ++i) {
+    Handle(Geom_Surface) s = BRep_Tool::Surface(TopoDS::Face(fs(i)));
+    Handle(Geom_BSplineSurface) bs = Handle(Geom_BSplineSurface)::DownCast(s);
+    if (bs.IsNull()) continue;
+    for (int u = 1; u <= bs->NbUPoles(); ++u)
+      for (int v = 1; v <= bs->NbVPoles(); ++v)
+        if (!finitePoint(bs->Pole(u, v))) throw Error("Face" + std::to_string(i) + " has NaN or infinite poles");
+  }
+}
+
+TopoDS_Shape readShape(const std::string& path, double timeLimit) {
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) throw Error("cannot open '" + path + "': no such file");
+  if (!S_ISREG(st.st_mode)) throw Error("'" + path + "' is not a regular file");
+  if (st.st_size == 0) throw Error("'" + path + "' is empty");
+  const std::string ext = extensionOf(path);
+  if (ext != "brep" && ext != "brp" && ext != "step" && ext != "stp")
+    throw Error("unsupported file type '." + ext + "' of '" + path + "': use .brep or .step");
+  // Trial read in a child: a hang or crash there costs only the child.
+  fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    int code = 1;
+    try {
+      const TopoDS_Shape s = readInProcess(path, ext);
+      validateShape(s);
+      code = 0;
+    } catch (...) {
+    }
+    _exit(code);
+  }
+  if (pid > 0) {
+    int status = 0;
+    const int steps = static_cast<int>(timeLimit * 100);
+    bool done = false;
+    for (int i = 0; i < steps && !done; ++i) {
+      if (waitpid(pid, &status, WNOHANG) == pid) done = true;
+      else usleep(10000);
+    }
+    if (!done) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      throw Error("reading '" + path + "' took longer than " + std::to_string(int(timeLimit)) + " s: the file is corrupt or truncated");
+    }
+    if (WIFSIGNALED(status)) throw Error("'" + path + "' is corrupt: the reader crashed on it");
+  }
+  TopoDS_Shape shape;
+  try {
+    shape = readInProcess(path, ext);
+  } catch (const Standard_Failure& e) {
+    throw Error("cannot read '" + path + "': " + e.GetMessageString());
+  }
+  validateShape(shape);
+  return shape;
+}
+
+void writeShape(const TopoDS_Shape& shape, const std::string& path) {
+  if (shape.IsNull()) throw Error("nothing to write to '" + path + "': the shape is empty");
+  const std::string ext = extensionOf(path);
+  const std::string tmp = path + ".tmp" + std::to_string(getpid()) + "." + ext;
+  bool ok = false;
+  try {
+    if (ext == "brep" || ext == "brp") {
+      ok = BRepTools::Write(shape, tmp.c_str());
+    } else if (ext == "step" || ext == "stp") {
+      STEPControl_Writer w;
+      Interface_Static::SetCVal("write.step.schema", "AP214IS");
+      ok = w.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone && w.Write(tmp.c_str()) == IFSelect_RetDone;
+    } else {
+      throw Error("unsupported output type '." + ext + "' of '" + path + "': use .brep or .step");
+    }
+  } catch (const Standard_Failure& e) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + e.GetMessageString());
+  }
+  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': check the folder exists and is writable");
+  }
+}
+
+TopoDS_Shape shapeFromBrepString(const std::string& brep) {
+  if (brep.empty()) throw Error("empty BREP text: the shape is empty");
+  std::istringstream in(brep);
+  TopoDS_Shape s;
+  BRep_Builder b;
+  try {
+    BRepTools::Read(s, in, b);
+  } catch (const Standard_Failure& e) {
+    throw Error(std::string("invalid BREP text: ") + e.GetMessageString());
+  }
+  if (s.IsNull()) throw Error("invalid BREP text: no shape in it");
+  validateShape(s);
+  return s;
+}
+
+std::string shapeToBrepString(const TopoDS_Shape& shape) {
+  std::ostringstream out;
+  BRepTools::Write(shape, out);
+  return out.str();
+}
+
+}  // namespace holefill

@@ -1,0 +1,24 @@
+// Reading and writing B-rep files as untrusted data (DESIGN.md "Files are
+// untrusted"). OCCT's readers can hang on truncated BREP text and crash on
+// malformed STEP, so a file is first read in a forked child under a time limit;
+// only when that child succeeds is it read in-process. Every shape entering the
+// core is checked for finite, bounded coordinates. Writes go to a temporary file
+// that is renamed into place, so a failure never leaves a half-written output.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+#include <string>
+
+namespace holefill {
+
+// .brep / .brp (OCCT native) or .step / .stp; throws holefill::Error with a clear message.
+TopoDS_Shape readShape(const std::string& path, double timeLimitSeconds = 60.0);
+void writeShape(const TopoDS_Shape& shape, const std::string& path);  // by extension, atomically
+
+TopoDS_Shape shapeFromBrepString(const std::string& brep);
+std::string shapeToBrepString(const TopoDS_Shape& shape);
+
+// Throws when a vertex, pole or curve/surface sample is NaN, infinite or beyond tol::kMaxCoordinate.
+void validateShape(const TopoDS_Shape& shape);
+
+}  // namespace holefill

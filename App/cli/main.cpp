@@ -1,0 +1,201 @@
+// holefill: the command-line door into the core (DESIGN.md), as thin as the
+// Python one. Exit codes: 0 done; 1 bad usage or input (one clear line on
+// stderr, nothing written); 2 the fill failed (nothing written); 3 the fill was
+// written but did not reach the requested continuity (the report says what it reached).
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "brep/hole_detection.h"
+#include "brep/sample_models.h"
+#include "brep/shape_io.h"
+#include "fill/hole_fill.h"
+#include "geometry/error.h"
+#include "learn/learn_backend.h"
+
+using namespace holefill;
+
+namespace {
+
+const char* kUsage =
+    "usage:\n"
+    "  holefill holes FILE [--all] [--json]\n"
+    "  holefill fill FILE --out OUT [--hole K | --edges Edge3,Edge7,... | --all-holes]\n"
+    "                [--face-out FACE.brep] [--method np|mvc|support] [--continuity G0|G1|G2]\n"
+    "                [--tolerance T] [--angular-tolerance RAD] [--json]\n"
+    "  holefill samples DIR        write the bundled sample models as .brep\n"
+    "  holefill --version\n";
+
+struct Args {
+  std::string verb, input;
+  std::map<std::string, std::string> opt;
+  bool has(const std::string& k) const { return opt.count(k) > 0; }
+  std::string get(const std::string& k, const std::string& d = "") const { return has(k) ? opt.at(k) : d; }
+};
+
+Args parse(int argc, char** argv) {
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes"};
+  Args a;
+  if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
+  a.verb = argv[1];
+  for (int i = 2; i < argc; ++i) {
+    std::string s = argv[i];
+    if (s.rfind("--", 0) == 0) {
+      const auto eq = s.find('=');
+      if (eq != std::string::npos) { a.opt[s.substr(0, eq)] = s.substr(eq + 1); continue; }
+      if (std::find(flags.begin(), flags.end(), s) != flags.end()) { a.opt[s] = "1"; continue; }
+      if (i + 1 >= argc) throw Error("option " + s + " needs a value");
+      a.opt[s] = argv[++i];
+    } else if (a.input.empty()) {
+      a.input = s;
+    } else {
+      throw Error("unexpected argument '" + s + "'");
+    }
+  }
+  return a;
+}
+
+double number(const std::string& s, const std::string& what) {
+  try {
+    size_t n = 0;
+    const double v = std::stod(s, &n);
+    if (n != s.size() || !std::isfinite(v) || v < 0) throw 0;
+    return v;
+  } catch (...) {
+    throw Error(what + " must be a non-negative number, got '" + s + "'");
+  }
+}
+
+std::vector<int> edgeNames(const std::string& list) {
+  std::vector<int> r;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (item.rfind("Edge", 0) == 0) item = item.substr(4);
+    try {
+      size_t n = 0;
+      const int k = std::stoi(item, &n);
+      if (n != item.size() || k < 1) throw 0;
+      r.push_back(k);
+    } catch (...) {
+      throw Error("bad edge name '" + item + "' in --edges: use Edge3,Edge7,... (1-based, as FreeCAD shows them)");
+    }
+  }
+  if (r.empty()) throw Error("--edges names no edge");
+  return r;
+}
+
+int cmdHoles(const Args& a) {
+  if (a.input.empty()) throw Error("holes: no input file");
+  const TopoDS_Shape shape = readShape(a.input);
+  HoleDetectionOptions o;
+  o.includeOuterBoundary = a.has("--all");
+  const HoleDetectionResult d = detectHoles(shape, o);
+  if (a.has("--json")) { std::cout << toJson(d) << "\n"; return 0; }
+  std::printf("%-5s %-3s %-8s %-12s %s\n", "hole", "N", "edges", "length", "edge names");
+  for (size_t i = 0; i < d.holes.size(); ++i) {
+    std::string names;
+    for (int e : d.holes[i].edgeIndices()) names += (names.empty() ? "Edge" : ",Edge") + std::to_string(e);
+    std::printf("%-5zu %-3d %-8zu %-12.6g %s%s\n", i + 1, d.holes[i].corners, d.holes[i].edges.size(),
+                d.holes[i].length, names.c_str(), d.holes[i].outerBoundary ? "  (outer boundary)" : "");
+  }
+  for (const auto& w : d.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (d.holes.empty()) std::printf("no holes\n");
+  return 0;
+}
+
+int cmdFill(const Args& a) {
+  if (a.input.empty()) throw Error("fill: no input file");
+  if (!a.has("--out")) throw Error("fill: --out OUT is required");
+  HoleFillOptions o;
+  o.method = paramMethodFromString(a.get("--method", "np"));
+  o.continuity = continuityFromString(a.get("--continuity", "G1"));
+  if (a.has("--tolerance")) o.tolerance = number(a.get("--tolerance"), "--tolerance");
+  if (a.has("--angular-tolerance")) o.angularTolerance = number(a.get("--angular-tolerance"), "--angular-tolerance");
+  TopoDS_Shape shape = readShape(a.input);
+  std::vector<HoleFillResult> results;
+  if (a.has("--all-holes")) {
+    const size_t n = detectHoles(shape).holes.size();
+    if (n == 0) throw Error("the shape has no holes");
+    for (size_t i = 0; i < n; ++i) {
+      HoleFillResult r = fillHole(shape, 0, o);
+      results.push_back(r);
+      if (r.status == FillStatus::Failed || r.status == FillStatus::Cancelled) break;
+      shape = r.shape;
+      if (detectHoles(shape).holes.empty()) break;
+    }
+  } else if (a.has("--edges")) {
+    results.push_back(fillHole(shape, edgeNames(a.get("--edges")), o));
+  } else {
+    const int k = a.has("--hole") ? static_cast<int>(number(a.get("--hole"), "--hole")) : 1;
+    if (k < 1) throw Error("--hole is 1-based");
+    results.push_back(fillHole(shape, k - 1, o));
+  }
+  const HoleFillResult& last = results.back();
+  int code = 0;
+  for (const auto& r : results) {
+    if (r.status == FillStatus::Failed || r.status == FillStatus::Cancelled) code = 2;
+    else if (r.status == FillStatus::ToleranceNotMet && code == 0) code = 3;
+  }
+  if (code != 2) {
+    writeShape(last.shape, a.get("--out"));
+    if (a.has("--face-out")) writeShape(last.face, a.get("--face-out"));
+  }
+  if (a.has("--json")) {
+    std::cout << "[";
+    for (size_t i = 0; i < results.size(); ++i) std::cout << (i ? "," : "") << toJson(results[i]);
+    std::cout << "]\n";
+  } else {
+    for (const auto& r : results)
+      std::printf("hole %d (N=%d, %zu edges): %s, %s; G0 %.3g (%.2g of scale) G1 %.3g rad G2 %.3g; %dx%d poles; %.2f s\n",
+                  r.holeIndex + 1, r.hole.corners, r.hole.edges.size(), toString(r.status).c_str(), r.message.c_str(),
+                  r.report.g0, r.report.g0Relative, r.report.g1, r.report.g2, r.polesU, r.polesV, r.timings.total);
+  }
+  if (code == 2) std::fprintf(stderr, "holefill: fill failed at stage %s: %s\n", toString(last.failedStage).c_str(), last.message.c_str());
+  return code;
+}
+
+int cmdSamples(const Args& a) {
+  if (a.input.empty()) throw Error("samples: no output folder");
+  for (const auto& n : samples::names()) {
+    const std::string path = a.input + "/" + n + ".brep";
+    writeShape(samples::byName(n), path);
+    std::printf("%s\n", path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
+      std::printf("holefill 0.1.0; learn backend: %s\n", learn::backendInfo().c_str());
+      return 0;
+    }
+    if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+      std::printf("%s", kUsage);
+      return 0;
+    }
+    const Args a = parse(argc, argv);
+    if (a.verb == "holes") return cmdHoles(a);
+    if (a.verb == "fill") return cmdFill(a);
+    if (a.verb == "samples") return cmdSamples(a);
+    throw Error("unknown command '" + a.verb + "'\n" + kUsage);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "holefill: %s\n", e.what());
+  } catch (const Standard_Failure& e) {
+    std::fprintf(stderr, "holefill: OpenCASCADE failed: %s\n", e.GetMessageString());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "holefill: %s\n", e.what());
+  }
+  return 1;
+}

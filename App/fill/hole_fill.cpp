@@ -1,0 +1,258 @@
+#include "fill/hole_fill.h"
+
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <Standard_Failure.hxx>
+#include <chrono>
+#include <cmath>
+
+#include "brep/face_building.h"
+#include "geometry/error.h"
+#include "geometry/json_writer.h"
+#include "geometry/tolerances.h"
+
+namespace holefill {
+
+std::string toString(FillStatus s) {
+  switch (s) {
+    case FillStatus::Ok: return "ok";
+    case FillStatus::ToleranceNotMet: return "tolerance_not_met";
+    case FillStatus::Failed: return "failed";
+    case FillStatus::Cancelled: return "cancelled";
+  }
+  return "?";
+}
+
+std::string toString(FillStage s) {
+  switch (s) {
+    case FillStage::None: return "none";
+    case FillStage::Detect: return "detect";
+    case FillStage::Sample: return "sample";
+    case FillStage::Parameterize: return "parameterize";
+    case FillStage::Solve: return "solve";
+    case FillStage::Build: return "build";
+    case FillStage::Check: return "check";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string edgeList(const std::vector<int>& e) {
+  std::string s;
+  for (int i : e) s += (s.empty() ? "Edge" : ", Edge") + std::to_string(i);
+  return s;
+}
+
+}  // namespace
+
+HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& opt) {
+  const HoleDetectionResult det = detectHoles(model, opt.detection);
+  if (det.holes.empty()) throw Error("the shape has no holes (no closed free-boundary loop besides outer sheet boundaries)");
+  if (holeIndex < 0 || holeIndex >= static_cast<int>(det.holes.size()))
+    throw Error("hole " + std::to_string(holeIndex + 1) + " does not exist: the shape has " +
+                std::to_string(det.holes.size()) + " hole(s)");
+  return fillHole(model, det.holes[holeIndex].edgeIndices(), opt);
+}
+
+HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& opt) {
+  if (model.IsNull()) throw Error("the shape is empty: nothing to fill");
+  HoleFillResult r;
+  r.requested = toString(opt.continuity);
+  r.methodName = toString(opt.method);
+  const auto t0 = Clock::now();
+  FillStage stage = FillStage::Detect;
+  auto progress = [&](double f) { return !opt.progress || opt.progress(f); };
+  try {
+    // Work on a deep copy: the new pcurves and tolerances go onto the copy's edges.
+    auto t = Clock::now();
+    BRepBuilderAPI_Copy copier(model, Standard_True, Standard_False);
+    const TopoDS_Shape work = copier.Shape();
+    const HoleDetectionResult det = detectHoles(work, opt.detection);
+    r.warnings = det.warnings;
+    r.hole = holeContainingEdges(det, holeEdges);
+    for (size_t i = 0; i < det.holes.size(); ++i)
+      if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
+    r.timings.detect = since(t);
+    if (!progress(0.05)) { r.status = FillStatus::Cancelled; return r; }
+
+    stage = FillStage::Sample;
+    t = Clock::now();
+    const Hole& hole = r.hole;
+    HF_CHECK(hole.scale > 0, "the hole has zero size");
+    const std::vector<BoundarySample> samples = sampleBoundary(hole, opt.sampling);
+    r.samples = static_cast<int>(samples.size());
+    for (const auto& s : samples)
+      if (!s.point.allFinite() || !s.normal.allFinite() || !std::isfinite(s.curvature))
+        throw Error("the hole boundary has non-finite coordinates (NaN or infinity) at Edge" +
+                    std::to_string(hole.edges[s.edge].edgeIndex));
+    // Normalize: centre of the boundary box at the origin, its diagonal = 1.
+    Eigen::Vector3d lo = samples[0].point, hi = samples[0].point;
+    for (const auto& s : samples) { lo = lo.cwiseMin(s.point); hi = hi.cwiseMax(s.point); }
+    const Eigen::Vector3d centre = 0.5 * (lo + hi);
+    const double scale = hole.scale;
+    std::vector<BoundarySample> unit = samples;
+    for (auto& s : unit) {
+      s.point = (s.point - centre) / scale;
+      s.curvature *= scale;
+      s.weight /= scale;
+    }
+    r.timings.sample = since(t);
+
+    stage = FillStage::Parameterize;
+    t = Clock::now();
+    const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
+    for (const auto& w : P.warnings) r.warnings.push_back(w);
+    r.timings.parameterize = since(t);
+    if (!progress(0.1)) { r.status = FillStatus::Cancelled; return r; }
+
+    stage = FillStage::Solve;
+    t = Clock::now();
+    FillConstraints c;
+    for (size_t k = 0; k < unit.size(); ++k) {
+      c.uv.push_back(P.uv[k]);
+      c.point.push_back(unit[k].point);
+      c.normal.push_back(unit[k].normal);
+      c.across.push_back(unit[k].across);
+      c.curvature.push_back(unit[k].curvature);
+      c.weight.push_back(unit[k].weight);
+      c.normalValid.push_back(unit[k].normalValid);
+    }
+    c.referenceUV = P.interiorUV;
+    c.referenceXYZ = P.interiorXYZ;
+    r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
+    VariationalFillOptions so = opt.solver;
+    so.continuity = opt.continuity;
+    // The solver meets tighter targets at its samples than the report checks between them.
+    so.g0Tolerance = std::min(so.g0Tolerance, 0.5 * r.g0Tolerance / scale);
+    so.g1Tolerance = std::min(so.g1Tolerance, 0.5 * opt.angularTolerance);
+    so.g2Tolerance = std::min(so.g2Tolerance, 0.5 * opt.curvatureTolerance);
+    so.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
+    const VariationalFillResult vf = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, so);
+    for (const auto& w : vf.warnings) r.warnings.push_back(w);
+    if (vf.cancelled) { r.status = FillStatus::Cancelled; r.message = "cancelled by the user"; return r; }
+    BSplineSurface surf = vf.surface;
+    for (int i = 0; i < surf.poles.rows(); ++i) surf.poles.row(i) = (centre + scale * surf.poles.row(i).transpose()).transpose();
+    r.polesU = surf.numU();
+    r.polesV = surf.numV();
+    r.refinements = vf.refinements;
+    r.timings.solve = since(t);
+
+    stage = FillStage::Build;
+    t = Clock::now();
+    const FaceBuildResult fb = buildTrimmedFace(hole, toOcct(surf), samples, P.uv);
+    r.face = fb.face;
+    if (opt.sew) {
+      const SewResult sr = sewFace(work, r.face);
+      r.shape = sr.shape;
+      r.closedSolid = sr.closedSolid;
+      r.volume = sr.volume;
+    }
+    r.timings.build = since(t);
+
+    stage = FillStage::Check;
+    t = Clock::now();
+    r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
+    r.shapeValid = opt.sew ? BRepCheck_Analyzer(r.shape).IsValid() : r.faceValid;
+    r.report = continuityReport(r.face, hole);
+    r.achieved = r.report.achieved(r.g0Tolerance, opt.angularTolerance, opt.curvatureTolerance);
+    for (const auto& e : r.report.edges) {
+      const bool bad = e.g0 > r.g0Tolerance || (opt.continuity >= Continuity::G1 && e.g1 > opt.angularTolerance) ||
+                       (opt.continuity == Continuity::G2 && e.g2 > opt.curvatureTolerance);
+      if (bad) r.faultyEdges.push_back(e.edgeIndex);
+    }
+    r.timings.check = since(t);
+    const int reached = r.achieved == "none" ? -1 : r.achieved[1] - '0';
+    if (!r.faceValid || !r.shapeValid) {
+      r.status = FillStatus::Failed;
+      r.failedStage = FillStage::Check;
+      r.message = std::string("the filled ") + (!r.faceValid ? "face" : "model") + " is not a valid B-rep (BRepCheck)";
+    } else if (reached < static_cast<int>(opt.continuity)) {
+      r.status = FillStatus::ToleranceNotMet;
+      r.failedStage = FillStage::Solve;
+      r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
+                  ", G1 " + std::to_string(r.report.g1) + " rad, G2 " + std::to_string(r.report.g2) +
+                  "); worst at " + edgeList(r.faultyEdges);
+    } else {
+      r.status = FillStatus::Ok;
+      r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
+    }
+  } catch (const Error& e) {
+    r.status = FillStatus::Failed;
+    r.failedStage = stage;
+    r.message = e.what();
+  } catch (const Standard_Failure& e) {
+    r.status = FillStatus::Failed;
+    r.failedStage = stage;
+    r.message = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+  } catch (const std::exception& e) {
+    r.status = FillStatus::Failed;
+    r.failedStage = stage;
+    r.message = e.what();
+  }
+  if (r.status == FillStatus::Failed && r.faultyEdges.empty()) r.faultyEdges = r.hole.edgeIndices();
+  r.timings.total = since(t0);
+  progress(1.0);
+  return r;
+}
+
+namespace {
+void holeJson(JsonWriter& j, const Hole& h, int index) {
+  j.beginObject();
+  j.field("index", index);
+  std::vector<std::string> names;
+  std::vector<int> supports;
+  for (const auto& e : h.edges) { names.push_back("Edge" + std::to_string(e.edgeIndex)); supports.push_back(e.supportIndex); }
+  j.field("edges", names).field("edge_indices", h.edgeIndices()).field("support_faces", supports);
+  j.field("corners", h.corners).field("length", h.length).field("scale", h.scale);
+  j.field("outer_boundary", h.outerBoundary).field("outer_score", h.outerScore);
+  j.endObject();
+}
+}  // namespace
+
+std::string toJson(const HoleDetectionResult& d) {
+  JsonWriter j;
+  j.beginObject().key("holes").beginArray();
+  for (size_t i = 0; i < d.holes.size(); ++i) holeJson(j, d.holes[i], static_cast<int>(i) + 1);
+  j.endArray().key("outer_boundaries").beginArray();
+  for (size_t i = 0; i < d.outerBoundaries.size(); ++i) holeJson(j, d.outerBoundaries[i], static_cast<int>(i) + 1);
+  j.endArray();
+  j.field("non_manifold_edges", d.nonManifoldEdges).field("warnings", d.warnings);
+  j.endObject();
+  return j.str();
+}
+
+std::string toJson(const HoleFillResult& r) {
+  JsonWriter j;
+  j.beginObject();
+  j.field("status", toString(r.status)).field("failed_stage", toString(r.failedStage)).field("message", r.message);
+  j.field("method", r.methodName).field("requested", r.requested).field("achieved", r.achieved);
+  j.field("hole", r.holeIndex + 1).field("corners", r.hole.corners).field("edges", r.hole.edgeIndices());
+  j.field("faulty_edges", r.faultyEdges);
+  j.field("scale", r.report.scale).field("samples", r.report.samples);
+  j.field("g0", r.report.g0).field("g0_relative", r.report.g0Relative).field("g1", r.report.g1).field("g2", r.report.g2);
+  j.field("g0_tolerance", r.g0Tolerance);
+  j.key("str").beginObject();
+  j.field("g0_strict", r.report.g0Strict).field("g0_loose", r.report.g0Loose).field("g1_strict", r.report.g1Strict);
+  j.field("g1_loose", r.report.g1Loose).field("g2", r.report.g2Ok);
+  j.endObject();
+  j.key("per_edge").beginArray();
+  for (const auto& e : r.report.edges)
+    j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2).endObject();
+  j.endArray();
+  j.field("face_valid", r.faceValid).field("shape_valid", r.shapeValid).field("closed_solid", r.closedSolid);
+  j.field("volume", r.volume).field("poles_u", r.polesU).field("poles_v", r.polesV).field("refinements", r.refinements);
+  j.field("boundary_samples", r.samples);
+  j.key("timings").beginObject();
+  j.field("detect", r.timings.detect).field("sample", r.timings.sample).field("parameterize", r.timings.parameterize);
+  j.field("solve", r.timings.solve).field("build", r.timings.build).field("check", r.timings.check).field("total", r.timings.total);
+  j.endObject();
+  j.field("warnings", r.warnings);
+  j.endObject();
+  return j.str();
+}
+
+}  // namespace holefill

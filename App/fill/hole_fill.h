@@ -1,0 +1,78 @@
+// Filling one N-sided hole of a B-rep model with a single trimmed B-spline face,
+// end to end: detect -> sample -> parameterize -> solve -> build -> check.
+// The user's shape is never touched: the pipeline works on a deep copy, whose
+// edges receive the new face's pcurves, and returns the face and the sewn model.
+//
+// Failure is reported, not thrown: the result names the stage that failed, the
+// hole's edges that carry the largest errors, and which continuity was actually
+// reached next to the one requested (STYLE.md #3). Holes that cannot be named
+// (empty shape, no such edges) throw holefill::Error. OCCT exceptions never leave.
+#pragma once
+
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "brep/boundary_sampling.h"
+#include "brep/continuity_report.h"
+#include "brep/hole_detection.h"
+#include "fill/parameterizer.h"
+#include "fill/variational_fill.h"
+
+namespace holefill {
+
+struct HoleFillOptions {
+  ParamMethod method = ParamMethod::NearestPlane;
+  Continuity continuity = Continuity::G1;
+  double tolerance = 0.0;           // G0 tolerance, model units; 0 means 1e-6 x hole scale (DESIGN strict tier)
+  double angularTolerance = 1e-3;   // G1 tolerance, radians
+  double curvatureTolerance = 0.1;  // G2 tolerance, relative
+  HoleDetectionOptions detection;
+  BoundarySamplingOptions sampling;
+  ParameterizationOptions parameterization;
+  VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
+  bool sew = true;                  // also build the model with the face sewn in
+  std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel
+};
+
+enum class FillStatus { Ok, ToleranceNotMet, Failed, Cancelled };
+enum class FillStage { None, Detect, Sample, Parameterize, Solve, Build, Check };
+std::string toString(FillStatus s);
+std::string toString(FillStage s);
+
+struct FillTimings {
+  double detect = 0, sample = 0, parameterize = 0, solve = 0, build = 0, check = 0, total = 0;  // seconds
+};
+
+struct HoleFillResult {
+  FillStatus status = FillStatus::Failed;
+  FillStage failedStage = FillStage::None;
+  std::string message;
+  std::vector<int> faultyEdges;  // 1-based model edge indices where the requested tolerances fail
+  TopoDS_Face face;              // the filling face (shares edges with `shape`)
+  TopoDS_Shape shape;            // the model copy with the face sewn in
+  bool closedSolid = false;
+  double volume = 0.0;
+  bool faceValid = false, shapeValid = false;  // BRepCheck_Analyzer
+  Hole hole;
+  int holeIndex = -1;            // 0-based index among detectHoles(model).holes, -1 for an outer boundary
+  ContinuityReport report;
+  std::string requested, achieved;  // "G0".."G2"; achieved may be "none"
+  double g0Tolerance = 0;           // model units, as applied
+  int polesU = 0, polesV = 0, refinements = 0, samples = 0;
+  std::vector<std::string> warnings;
+  FillTimings timings;
+  std::string methodName;
+};
+
+// The hole is the loop holding all the given 1-based edge indices (FreeCAD "Edge<k>").
+HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& options = {});
+// The hole by 0-based index in detectHoles(model).holes.
+HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& options = {});
+
+std::string toJson(const HoleFillResult& r);
+std::string toJson(const HoleDetectionResult& r);
+
+}  // namespace holefill

@@ -1,0 +1,182 @@
+#include "fill/parameterizer.h"
+
+#include <BRepAdaptor_Curve2d.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <cmath>
+
+#include "geometry/bspline_surface.h"
+#include "geometry/error.h"
+#include "geometry/polygon2d.h"
+
+namespace holefill {
+
+ParamMethod paramMethodFromString(const std::string& s) {
+  if (s == "np" || s == "NP" || s == "plane") return ParamMethod::NearestPlane;
+  if (s == "mvc" || s == "MVC" || s == "polygon") return ParamMethod::MeanValue;
+  if (s == "support" || s == "exact") return ParamMethod::Support;
+  throw Error("unknown parameterization method '" + s + "': use np, mvc or support");
+}
+
+std::string toString(ParamMethod m) {
+  switch (m) {
+    case ParamMethod::NearestPlane: return "np";
+    case ParamMethod::MeanValue: return "mvc";
+    case ParamMethod::Support: return "support";
+  }
+  return "?";
+}
+
+namespace {
+
+void nearestPlane(const std::vector<BoundarySample>& s, Parameterization& P) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  double W = 0;
+  for (const auto& x : s) { c += x.weight * x.point; W += x.weight; }
+  c /= W;
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  for (const auto& x : s) C += x.weight * (x.point - c) * (x.point - c).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
+  const Eigen::Vector3d e1 = es.eigenvectors().col(2), e2 = es.eigenvectors().col(1);
+  for (const auto& x : s) P.uv.emplace_back((x.point - c).dot(e1), (x.point - c).dot(e2));
+}
+
+// Sample indices splitting the loop into `count` parts of equal arc length, starting at `first`.
+std::vector<int> equalArcCorners(const std::vector<BoundarySample>& s, int first, int count) {
+  std::vector<double> acc(s.size(), 0.0);
+  const int n = static_cast<int>(s.size());
+  for (int k = 1; k < n; ++k) acc[k] = acc[k - 1] + (s[(first + k) % n].point - s[(first + k - 1) % n].point).norm();
+  const double L = acc[n - 1] + (s[first].point - s[(first + n - 1) % n].point).norm();
+  std::vector<int> r;
+  for (int c = 0; c < count; ++c) {
+    const double target = L * c / count;
+    int best = 0;
+    for (int k = 0; k < n; ++k)
+      if (std::abs(acc[k] - target) < std::abs(acc[best] - target)) best = k;
+    r.push_back((first + best) % n);
+  }
+  return r;
+}
+
+void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const ParameterizationOptions& opt,
+               Parameterization& P) {
+  const int n = static_cast<int>(s.size());
+  // Corner samples: the first sample of each edge that starts with a corner.
+  std::vector<int> corners;
+  for (int i = 0; i < n; ++i)
+    if ((i == 0 || s[i].edge != s[i - 1].edge) && hole.edges[s[i].edge].cornerAtStart) corners.push_back(i);
+  if (static_cast<int>(corners.size()) < opt.minCorners) {
+    P.warnings.push_back("the loop has " + std::to_string(corners.size()) +
+                         " corners; MVC uses 4 virtual corners at equal arc length");
+    corners = equalArcCorners(s, corners.empty() ? 0 : corners[0], 4);
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    HF_CHECK(corners.size() >= 3, "the loop is too short to place virtual corners");
+  }
+  const int N = static_cast<int>(corners.size());
+  double L = 0;
+  for (int i = 0; i < n; ++i) L += (s[(i + 1) % n].point - s[i].point).norm();
+  const double R = L / (2.0 * N * std::sin(M_PI / N));  // N-gon with the loop's perimeter
+  std::vector<Eigen::Vector2d> V(N);
+  for (int c = 0; c < N; ++c) V[c] = R * Eigen::Vector2d(std::cos(2 * M_PI * c / N), std::sin(2 * M_PI * c / N));
+  P.uv.assign(n, Eigen::Vector2d::Zero());
+  for (int c = 0; c < N; ++c) {
+    const int a = corners[c], b = corners[(c + 1) % N];
+    const int len = (b - a + n) % n == 0 ? n : (b - a + n) % n;
+    std::vector<double> acc(len + 1, 0.0);
+    for (int k = 1; k <= len; ++k) acc[k] = acc[k - 1] + (s[(a + k) % n].point - s[(a + k - 1) % n].point).norm();
+    for (int k = 0; k < len; ++k) {
+      const double f = acc[len] > 0 ? acc[k] / acc[len] : double(k) / len;
+      P.uv[(a + k) % n] = (1 - f) * V[c] + f * V[(c + 1) % N];
+    }
+  }
+  P.cornerSamples = corners;
+  // Interior reference points by mean value interpolation of the boundary.
+  Polygon2 poly;
+  std::vector<Eigen::Vector3d> xyz;
+  const int stride = std::max(1, n / 256);
+  for (int i = 0; i < n; i += stride) { poly.push_back(P.uv[i]); xyz.push_back(s[i].point); }
+  const int G = opt.interiorReferenceGrid;
+  for (int i = 1; i < G; ++i)
+    for (int j = 1; j < G; ++j) {
+      const Eigen::Vector2d x(-R + 2 * R * i / G, -R + 2 * R * j / G);
+      if (!contains(poly, x)) continue;
+      const Eigen::VectorXd w = meanValueCoordinates(poly, x);
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
+      for (int k = 0; k < w.size(); ++k) p += w(k) * xyz[k];
+      P.interiorUV.push_back(x);
+      P.interiorXYZ.push_back(p);
+    }
+}
+
+void support(const Hole& hole, const std::vector<BoundarySample>& s, Parameterization& P) {
+  const TopoDS_Face& f = hole.edges[0].support;
+  for (const auto& e : hole.edges)
+    if (!e.support.IsSame(f))
+      throw Error("the 'support' parameterization needs a hole cut out of a single face; use np or mvc");
+  for (const auto& x : s) {
+    BRepAdaptor_Curve2d pc(hole.edges[x.edge].edge, f);
+    const gp_Pnt2d uv = pc.Value(x.t);
+    P.uv.emplace_back(uv.X(), uv.Y());
+  }
+  BRepAdaptor_Surface as(f, Standard_False);
+  P.u0 = as.FirstUParameter(); P.u1 = as.LastUParameter();
+  P.v0 = as.FirstVParameter(); P.v1 = as.LastVParameter();
+  Handle(Geom_Surface) g = BRep_Tool::Surface(f);
+  Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(g);
+  if (!b.IsNull() && !b->IsURational() && !b->IsVRational() && !b->IsUPeriodic() && !b->IsVPeriodic()) {
+    const BSplineSurface bs = fromOcct(b);
+    if (bs.degreeU == 3 && bs.degreeV == 3) { P.knotsU = bs.knotsU; P.knotsV = bs.knotsV; }
+  }
+  if (!std::isfinite(P.u0) || !std::isfinite(P.u1) || !std::isfinite(P.v0) || !std::isfinite(P.v1)) {
+    P.u0 = P.v0 = 1e300; P.u1 = P.v1 = -1e300;  // unbounded surface: recomputed from the pcurve below
+  }
+}
+
+}  // namespace
+
+Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,
+                              const ParameterizationOptions& opt) {
+  HF_CHECK(samples.size() >= 6, "a hole boundary needs at least 6 samples");
+  Parameterization P;
+  bool fixedDomain = false;
+  switch (method) {
+    case ParamMethod::NearestPlane: nearestPlane(samples, P); break;
+    case ParamMethod::MeanValue: meanValue(hole, samples, opt, P); break;
+    case ParamMethod::Support: support(hole, samples, P); fixedDomain = P.u0 < P.u1; break;
+  }
+  Polygon2 poly(P.uv.begin(), P.uv.end());
+  const double area = signedArea(poly);
+  Eigen::AlignedBox2d box;
+  for (const auto& q : P.uv) box.extend(q);
+  if (!(std::abs(area) > 1e-12 * box.diagonal().squaredNorm()))
+    throw Error("the " + toString(method) + " parameterization maps the hole boundary onto a curve without area: "
+                "the loop is degenerate for this method");
+  if (selfIntersects(poly))
+    throw Error("the " + toString(method) + " parameterization folds the hole boundary (self-intersecting pcurve); "
+                "try another method");
+  if (area < 0) {  // mirror u about the domain centre: keeps the domain, reverses orientation
+    P.mirroredU = true;
+    const double c = fixedDomain ? P.u0 + P.u1 : box.min().x() + box.max().x();
+    for (auto& q : P.uv) q.x() = c - q.x();
+    for (auto& q : P.interiorUV) q.x() = c - q.x();
+    if (!P.knotsU.empty()) {
+      std::vector<double> k;
+      for (auto it = P.knotsU.rbegin(); it != P.knotsU.rend(); ++it) k.push_back(c - *it);
+      P.knotsU = k;
+    }
+    box = Eigen::AlignedBox2d();
+    for (const auto& q : P.uv) box.extend(q);
+  }
+  if (!fixedDomain) {
+    const Eigen::Vector2d ext = box.sizes();
+    const double m = opt.margin * std::max(ext.x(), ext.y());
+    P.u0 = box.min().x() - m; P.u1 = box.max().x() + m;
+    P.v0 = box.min().y() - m; P.v1 = box.max().y() + m;
+  }
+  return P;
+}
+
+}  // namespace holefill

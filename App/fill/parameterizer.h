@@ -1,0 +1,49 @@
+// Parameterizers give every boundary sample of a hole a (u, v) on the filling
+// surface's domain: the samples of the trimming pcurve (uvtran.md Sec. 2-3).
+// All sit behind parameterize(); UVTran plugs in as one more ParamMethod.
+//  - NearestPlane (NP, Liu 2012): least-squares plane of the loop, orthogonal projection.
+//  - MeanValue (MVC, Floater 2003): the N corners go to a regular N-gon, samples along each
+//    side by chord length; mean value coordinates of interior points of the N-gon
+//    interpolate the boundary and give interior reference points (uv, xyz).
+//  - Support: the hole's own pcurves on its single support face (a hole cut out of one
+//    face); reproduces that face's surface when it is a B-spline, and is the reference for tests.
+// Every result is oriented counter-clockwise (u is mirrored when needed) so the filling
+// face is FORWARD with the loop as its outer wire; a folded (self-intersecting) pcurve throws.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "brep/boundary_sampling.h"
+#include "brep/hole_detection.h"
+
+namespace holefill {
+
+enum class ParamMethod { NearestPlane, MeanValue, Support };
+
+ParamMethod paramMethodFromString(const std::string& name);  // "np" | "mvc" | "support"
+std::string toString(ParamMethod m);
+
+struct ParameterizationOptions {
+  double margin = 0.1;           // domain = pcurve bounding box grown by this fraction of its size per side
+  int minCorners = 3;            // loops with fewer corners get 4 virtual corners at equal arc length (MVC)
+  int interiorReferenceGrid = 12; // MVC interior reference points on a grid of this many cells per side
+};
+
+struct Parameterization {
+  std::vector<Eigen::Vector2d> uv;           // one per boundary sample
+  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;     // domain of the filling surface
+  std::vector<double> knotsU, knotsV;        // initial knots when the method implies them (Support), else empty
+  std::vector<Eigen::Vector2d> interiorUV;   // interior reference points (MVC)
+  std::vector<Eigen::Vector3d> interiorXYZ;
+  std::vector<int> cornerSamples;            // sample indices of the corners used
+  bool mirroredU = false;
+  std::vector<std::string> warnings;
+};
+
+// `samples` must be in the coordinates the fill is solved in (normalized); `hole` gives corners and supports.
+Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,
+                              const ParameterizationOptions& options = {});
+
+}  // namespace holefill

@@ -1,0 +1,279 @@
+#include "fill/variational_fill.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <set>
+
+#include "geometry/bspline_basis.h"
+#include "geometry/differential_geometry.h"
+#include "geometry/error.h"
+
+namespace holefill {
+
+Continuity continuityFromString(const std::string& s) {
+  if (s == "G0" || s == "g0" || s == "0") return Continuity::G0;
+  if (s == "G1" || s == "g1" || s == "1") return Continuity::G1;
+  if (s == "G2" || s == "g2" || s == "2") return Continuity::G2;
+  throw Error("unknown continuity '" + s + "': use G0, G1 or G2");
+}
+
+std::string toString(Continuity c) { return "G" + std::to_string(static_cast<int>(c)); }
+
+namespace {
+
+constexpr int P = 3;  // bicubic
+constexpr int M = (P + 1) * (P + 1);
+
+// Non-zero basis functions (and derivatives) of the surface at one parameter point.
+struct LocalBasis {
+  int su = 0, sv = 0;
+  Eigen::Matrix<double, M, 1> n, nu, nv, nuu, nuv, nvv;
+};
+
+LocalBasis localBasis(const std::vector<double>& U, const std::vector<double>& V, double u, double v, int order) {
+  LocalBasis b;
+  b.su = findSpan(U, P, u);
+  b.sv = findSpan(V, P, v);
+  const Eigen::MatrixXd Nu = basisDerivatives(U, P, b.su, u, order), Nv = basisDerivatives(V, P, b.sv, v, order);
+  for (int i = 0; i <= P; ++i)
+    for (int j = 0; j <= P; ++j) {
+      const int k = i * (P + 1) + j;
+      b.n(k) = Nu(0, i) * Nv(0, j);
+      if (order >= 1) { b.nu(k) = Nu(1, i) * Nv(0, j); b.nv(k) = Nu(0, i) * Nv(1, j); }
+      if (order >= 2) { b.nuu(k) = Nu(2, i) * Nv(0, j); b.nuv(k) = Nu(1, i) * Nv(1, j); b.nvv(k) = Nu(0, i) * Nv(2, j); }
+    }
+  return b;
+}
+
+// One scalar constraint row: Σ_k coef(k) * (P_{pole(k)} · dir) = target.
+struct Row {
+  int su, sv;
+  Eigen::Matrix<double, M, 1> coef;
+  Eigen::Vector3d dir;
+  double target, weight;
+  bool multiplier;  // takes part in the augmented-Lagrangian target shifts
+  int sample;       // -1 for reference rows
+};
+
+struct System {
+  int nu, nv;
+  std::vector<Row> rows;
+  Eigen::SparseMatrix<double> H;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+};
+
+int poleIndex(int nv, int su, int sv, int k) { return (su - P + k / (P + 1)) * nv + (sv - P + k % (P + 1)); }
+
+void assemble(System& sys, const Eigen::SparseMatrix<double>& A) {
+  const int n = sys.nu * sys.nv;
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(A.nonZeros() * 3 + sys.rows.size() * M * M * 3);
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
+      for (int c = 0; c < 3; ++c) trip.emplace_back(3 * it.row() + c, 3 * it.col() + c, it.value());
+  for (const Row& r : sys.rows) {
+    const Eigen::Matrix3d ww = r.weight * r.dir * r.dir.transpose();
+    for (int a = 0; a < M; ++a) {
+      const int ia = poleIndex(sys.nv, r.su, r.sv, a);
+      for (int b = 0; b < M; ++b) {
+        const int ib = poleIndex(sys.nv, r.su, r.sv, b);
+        const double cc = r.coef(a) * r.coef(b);
+        if (cc == 0.0) continue;
+        for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d)
+            if (ww(c, d) != 0.0) trip.emplace_back(3 * ia + c, 3 * ib + d, cc * ww(c, d));
+      }
+    }
+  }
+  sys.H.resize(3 * n, 3 * n);
+  sys.H.setFromTriplets(trip.begin(), trip.end());
+  sys.ldlt.compute(sys.H);
+  if (sys.ldlt.info() != Eigen::Success)
+    throw Error("the fill's normal equations are singular: the boundary constraints do not determine the surface");
+}
+
+Eigen::VectorXd rhs(const System& sys, const std::vector<double>& targets) {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * sys.nu * sys.nv);
+  for (size_t i = 0; i < sys.rows.size(); ++i) {
+    const Row& r = sys.rows[i];
+    for (int a = 0; a < M; ++a) {
+      const int ia = poleIndex(sys.nv, r.su, r.sv, a);
+      g.segment<3>(3 * ia) += (r.weight * targets[i] * r.coef(a)) * r.dir;
+    }
+  }
+  return g;
+}
+
+double rowValue(const System& sys, const Row& r, const Eigen::VectorXd& x) {
+  double s = 0.0;
+  for (int a = 0; a < M; ++a) s += r.coef(a) * x.segment<3>(3 * poleIndex(sys.nv, r.su, r.sv, a)).dot(r.dir);
+  return s;
+}
+
+BSplineSurface toSurface(const std::vector<double>& U, const std::vector<double>& V, const Eigen::VectorXd& x) {
+  BSplineSurface s;
+  s.knotsU = U;
+  s.knotsV = V;
+  s.poles.resize(s.numU() * s.numV(), 3);
+  for (int i = 0; i < s.numU() * s.numV(); ++i) s.poles.row(i) = x.segment<3>(3 * i).transpose();
+  return s;
+}
+
+struct Errors {
+  double g0 = 0, g1 = 0, g2 = 0;
+  std::vector<int> violating;
+};
+
+Errors measure(const BSplineSurface& s, const FillConstraints& c, const VariationalFillOptions& o) {
+  Errors e;
+  for (size_t k = 0; k < c.size(); ++k) {
+    const auto d = s.derivatives(c.uv[k].x(), c.uv[k].y(), o.continuity == Continuity::G2 ? 2 : 1);
+    const double e0 = (d[0][0] - c.point[k]).norm();
+    double e1 = 0.0, e2 = 0.0;
+    SurfaceJet j{d[0][0], d[1][0], d[0][1], d[2][0], d[1][1], d[0][2]};
+    Eigen::Vector3d n;
+    const bool ok = unitNormal(j, n);
+    if (c.normalValid[k] && o.continuity >= Continuity::G1)
+      e1 = ok ? std::acos(std::min(1.0, std::abs(n.dot(c.normal[k])))) : M_PI / 2;
+    if (c.normalValid[k] && o.continuity == Continuity::G2 && ok) {
+      const double kf = normalCurvature(j, n.dot(c.normal[k]) < 0 ? Eigen::Vector3d(-n) : n, c.across[k]);
+      e2 = std::abs(kf - c.curvature[k]) / std::max(std::abs(c.curvature[k]), 1.0);
+    }
+    e.g0 = std::max(e.g0, e0);
+    e.g1 = std::max(e.g1, e1);
+    e.g2 = std::max(e.g2, e2);
+    if (e0 > o.g0Tolerance || e1 > o.g1Tolerance || e2 > o.g2Tolerance) e.violating.push_back(static_cast<int>(k));
+  }
+  return e;
+}
+
+bool better(const Errors& a, const Errors& b, const VariationalFillOptions& o) {
+  // Compare by the worst tolerance ratio: the error that is furthest from its target decides.
+  auto worst = [&](const Errors& e) {
+    double w = e.g0 / o.g0Tolerance;
+    if (o.continuity >= Continuity::G1) w = std::max(w, e.g1 / o.g1Tolerance);
+    if (o.continuity == Continuity::G2) w = std::max(w, e.g2 / o.g2Tolerance);
+    return w;
+  };
+  return worst(a) < worst(b);
+}
+
+}  // namespace
+
+VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, double u1, double v0, double v1,
+                                           std::vector<double> U, std::vector<double> V,
+                                           const VariationalFillOptions& o) {
+  HF_CHECK(c.size() >= 6, "the fill needs at least 6 boundary samples");
+  HF_CHECK(u1 > u0 && v1 > v0, "the fill domain is empty");
+  for (size_t k = 0; k < c.size(); ++k)
+    if (!c.uv[k].allFinite() || !c.point[k].allFinite() || !std::isfinite(c.curvature[k]))
+      throw Error("boundary sample " + std::to_string(k) + " is not finite (NaN or infinite coordinates)");
+  const double du = u1 - u0, dv = v1 - v0;
+  if (U.empty()) U = clampedUniformKnots(P, std::max(3, int(std::lround(o.initialSpans * du / std::max(du, dv)))), u0, u1);
+  if (V.empty()) V = clampedUniformKnots(P, std::max(3, int(std::lround(o.initialSpans * dv / std::max(du, dv)))), v0, v1);
+  double W = 0;
+  for (double w : c.weight) W += w;
+  HF_CHECK(W > 0, "boundary samples carry no length");
+
+  VariationalFillResult res;
+  Errors bestErr;
+  bool haveBest = false;
+  const int order = o.continuity == Continuity::G2 ? 2 : 1;
+  const int totalRounds = o.maxRefinements + 1;
+
+  for (int level = 0; level <= o.maxRefinements; ++level) {
+    System sys;
+    sys.nu = static_cast<int>(U.size()) - P - 1;
+    sys.nv = static_cast<int>(V.size()) - P - 1;
+    const Eigen::SparseMatrix<double> A = fairnessMatrix(P, U, P, V, o.fairness);
+    std::vector<LocalBasis> basis;
+    basis.reserve(c.size());
+    for (size_t k = 0; k < c.size(); ++k) basis.push_back(localBasis(U, V, c.uv[k].x(), c.uv[k].y(), order));
+    // G0 and G1 rows: fixed for this level.
+    for (size_t k = 0; k < c.size(); ++k) {
+      const LocalBasis& b = basis[k];
+      const double w = c.weight[k] / W;
+      for (int d = 0; d < 3; ++d)
+        sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.point[k](d), o.positionWeight * w, true, int(k)});
+      if (o.continuity >= Continuity::G1 && c.normalValid[k]) {
+        sys.rows.push_back({b.su, b.sv, b.nu, c.normal[k], 0.0, o.normalWeight * w, true, int(k)});
+        sys.rows.push_back({b.su, b.sv, b.nv, c.normal[k], 0.0, o.normalWeight * w, true, int(k)});
+      }
+    }
+    for (size_t k = 0; k < c.referenceUV.size(); ++k) {
+      const LocalBasis b = localBasis(U, V, c.referenceUV[k].x(), c.referenceUV[k].y(), 0);
+      for (int d = 0; d < 3; ++d)
+        sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.referenceXYZ[k](d),
+                            o.referenceWeight / c.referenceUV.size(), false, -1});
+    }
+    const size_t fixedRows = sys.rows.size();
+    Eigen::VectorXd x;
+    BSplineSurface surf;
+    const int curvatureRounds = o.continuity == Continuity::G2 ? o.curvatureIterations + 1 : 1;
+    for (int cr = 0; cr < curvatureRounds; ++cr) {
+      sys.rows.resize(fixedRows);
+      if (cr > 0) {
+        // Linearize the cross-boundary normal curvature about the current surface.
+        for (size_t k = 0; k < c.size(); ++k) {
+          if (!c.normalValid[k]) continue;
+          const auto d = surf.derivatives(c.uv[k].x(), c.uv[k].y(), 1);
+          SurfaceJet j{d[0][0], d[1][0], d[0][1], {}, {}, {}};
+          const Eigen::Vector2d ab = parameterDirection(j, c.across[k]);
+          const double len2 = (ab(0) * j.su + ab(1) * j.sv).squaredNorm();
+          const LocalBasis& b = basis[k];
+          Eigen::Matrix<double, M, 1> coef = ab(0) * ab(0) * b.nuu + 2 * ab(0) * ab(1) * b.nuv + ab(1) * ab(1) * b.nvv;
+          sys.rows.push_back({b.su, b.sv, coef, c.normal[k], c.curvature[k] * len2,
+                              o.curvatureWeight * c.weight[k] / W, true, int(k)});
+        }
+      }
+      assemble(sys, A);
+      std::vector<double> targets(sys.rows.size());
+      for (size_t i = 0; i < sys.rows.size(); ++i) targets[i] = sys.rows[i].target;
+      Errors levelBest;
+      Eigen::VectorXd levelX;
+      for (int it = 0; it <= o.multiplierIterations; ++it) {
+        x = sys.ldlt.solve(rhs(sys, targets));
+        surf = toSurface(U, V, x);
+        const Errors e = measure(surf, c, o);
+        if (it == 0 || better(e, levelBest, o)) { levelBest = e; levelX = x; }
+        if (e.violating.empty()) break;
+        for (size_t i = 0; i < sys.rows.size(); ++i)
+          if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
+      }
+      x = levelX;
+      surf = toSurface(U, V, x);
+      if (!haveBest || better(levelBest, bestErr, o) || levelBest.violating.empty()) {
+        bestErr = levelBest;
+        res.surface = surf;
+        haveBest = true;
+      }
+    }
+    res.refinements = level;
+    if (o.progress && !o.progress(double(level + 1) / totalRounds)) { res.cancelled = true; break; }
+    if (bestErr.violating.empty() || level == o.maxRefinements) break;
+    // Refine: split every u-span and v-span that holds a violating sample.
+    std::set<double> newU, newV;
+    for (int k : bestErr.violating) {
+      const int su = findSpan(U, P, c.uv[k].x()), sv = findSpan(V, P, c.uv[k].y());
+      newU.insert(0.5 * (U[su] + U[su + 1]));
+      newV.insert(0.5 * (V[sv] + V[sv + 1]));
+    }
+    const int nuNew = sys.nu + static_cast<int>(newU.size()), nvNew = sys.nv + static_cast<int>(newV.size());
+    if (nuNew * nvNew > o.maxControlPoints) {
+      res.warnings.push_back("knot refinement stopped at " + std::to_string(sys.nu) + "x" + std::to_string(sys.nv) +
+                             " poles (maxControlPoints " + std::to_string(o.maxControlPoints) + ")");
+      break;
+    }
+    for (double k : newU) U.insert(std::upper_bound(U.begin(), U.end(), k), k);
+    for (double k : newV) V.insert(std::upper_bound(V.begin(), V.end(), k), k);
+  }
+  res.g0 = bestErr.g0;
+  res.g1 = bestErr.g1;
+  res.g2 = bestErr.g2;
+  res.violatingSamples = bestErr.violating;
+  res.toleranceMet = bestErr.violating.empty();
+  return res;
+}
+
+}  // namespace holefill

@@ -1,0 +1,82 @@
+// The variational fill (uvtran.md Sec. 3, Eq. 3-6 and App. A; Welch & Witkin 1992):
+// the clamped bicubic B-spline S over a rectangular domain that minimizes
+//   fairness(S)  +  G0: Σ w_k |S(uv_k) - B_k|²
+//                +  G1: Σ w_k [(S_u·n_k)² + (S_v·n_k)²]                 (linear in the poles)
+//                +  G2: Σ w_k (II_S(d_k, d_k)·n_k - κ_k |d_k|²)²       (linearized about the last S)
+// at the boundary samples (uv_k = pcurve samples, B_k, n_k, κ_k from the support faces).
+//
+// Solver: the constraint terms are imposed by an augmented Lagrangian on the same
+// factorization (sparse LDLT of the normal equations; targets are shifted by the
+// residual each round), so tolerances far below what a pure penalty reaches are met
+// without ill-conditioned weights. Where samples still violate the tolerances, knots
+// are inserted at the middle of the u- and v-spans holding them and the problem is
+// solved again, until the tolerances hold, maxControlPoints is reached or maxRefinements
+// rounds are done. G2 re-linearizes curvatureIterations times. Everything is solved in
+// the caller's (normalized) coordinates; tolerances are in those units.
+//
+// Limits: continuity that the data does not admit (support normals disagreeing at a
+// corner, a pcurve that squeezes a boundary feature) cannot be met; the result then
+// reports the achieved errors and the violating samples, never a silent downgrade.
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fill/fairness_energy.h"
+#include "geometry/bspline_surface.h"
+
+namespace holefill {
+
+enum class Continuity { G0 = 0, G1 = 1, G2 = 2 };
+Continuity continuityFromString(const std::string& s);  // "G0" | "G1" | "G2"
+std::string toString(Continuity c);
+
+struct FillConstraints {
+  std::vector<Eigen::Vector2d> uv;       // pcurve samples on the domain
+  std::vector<Eigen::Vector3d> point;    // boundary positions B_k
+  std::vector<Eigen::Vector3d> normal;   // unit support normals (ignored where normalValid is false)
+  std::vector<Eigen::Vector3d> across;   // unit cross-boundary directions in the support tangent plane
+  std::vector<double> curvature;         // support normal curvature along `across`
+  std::vector<double> weight;            // arc-length weights
+  std::vector<bool> normalValid;
+  std::vector<Eigen::Vector2d> referenceUV;   // optional soft interior reference points
+  std::vector<Eigen::Vector3d> referenceXYZ;
+  size_t size() const { return uv.size(); }
+};
+
+struct VariationalFillOptions {
+  Continuity continuity = Continuity::G1;  // highest order imposed
+  double g0Tolerance = 1e-7;     // max |S(uv_k) - B_k| (solve units); DESIGN strict tier is 1e-6 of the scale
+  double g1Tolerance = 5e-4;     // max normal angle (radians); DESIGN strict tier is 1e-3
+  double g2Tolerance = 0.05;     // max relative curvature deviation; DESIGN tier is 0.1
+  FairnessWeights fairness;      // bending 0.3, rate of bending 0.7
+  double positionWeight = 1e5;   // penalty of the G0 term (the multiplier rounds remove its bias)
+  double normalWeight = 1e3;     // penalty of the G1 term
+  double curvatureWeight = 1.0;  // penalty of the G2 term
+  double referenceWeight = 1e-2; // soft pull to interior reference points (MVC), no multiplier
+  int initialSpans = 6;          // spans along the longer domain side before refinement
+  int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
+  int maxRefinements = 7;        // knot-insertion rounds
+  int multiplierIterations = 12; // augmented-Lagrangian rounds per solve
+  int curvatureIterations = 3;   // G2 re-linearizations per refinement level
+  std::function<bool(double)> progress;  // called with a fraction in [0,1]; return false to cancel
+};
+
+struct VariationalFillResult {
+  BSplineSurface surface;
+  double g0 = 0, g1 = 0, g2 = 0;  // max errors at the samples (solve units, radians, relative)
+  bool toleranceMet = false;
+  bool cancelled = false;
+  int refinements = 0;
+  std::vector<int> violatingSamples;
+  std::vector<std::string> warnings;
+};
+
+// Solves on [u0,u1]x[v0,v1]; knotsU/knotsV give the initial clamped cubic knots (empty: uniform).
+VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, double u1, double v0, double v1,
+                                           std::vector<double> knotsU, std::vector<double> knotsV,
+                                           const VariationalFillOptions& options = {});
+
+}  // namespace holefill

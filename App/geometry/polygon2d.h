@@ -1,0 +1,22 @@
+// Closed planar polygons as they occur in parameter domains: signed area
+// (orientation), point containment, a self-intersection test (a pcurve that
+// folds cannot trim a face), and mean value coordinates (Floater 2003,
+// "Mean value coordinates", CAGD 20:19-27), which interpolate boundary data
+// into a polygon's interior for any simple polygon, convex or not.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace holefill {
+
+using Polygon2 = std::vector<Eigen::Vector2d>;  // closed implicitly (last vertex connects to first)
+
+double signedArea(const Polygon2& poly);  // > 0 for counter-clockwise
+bool contains(const Polygon2& poly, const Eigen::Vector2d& x);  // even-odd rule
+// True when two non-adjacent edges intersect; zero-length edges are skipped.
+bool selfIntersects(const Polygon2& poly);
+// Mean value coordinates of x (strictly inside) w.r.t. the polygon vertices; they sum to 1.
+Eigen::VectorXd meanValueCoordinates(const Polygon2& poly, const Eigen::Vector2d& x);
+
+}  // namespace holefill

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Bad inputs to the CLI: each must exit non-zero with exactly one clear line on stderr and write nothing.
+set -u
+H=${HOLEFILL:?}
+T=$1
+rm -rf "$T"; mkdir -p "$T"
+fail=0; pass=0
+expect_error() {  # name, expected exit code, args...
+  local name=$1 want=$2; shift 2
+  "$H" "$@" >"$T/out" 2>"$T/err"; local rc=$?
+  local lines; lines=$(wc -l <"$T/err")
+  if [ "$rc" = "$want" ] && [ "$lines" -ge 1 ] && grep -q '^holefill: ' "$T/err" && [ ! -e "$T/o.brep" ]; then
+    pass=$((pass+1)); echo "ok   $name: $(head -1 "$T/err")"
+  else
+    fail=$((fail+1)); echo "FAIL $name: rc=$rc (want $want), stderr: $(cat "$T/err")"
+  fi
+  rm -f "$T/o.brep"
+}
+printf 'garbage that is not a shape\n' >"$T/corrupt.brep"
+head -c 300 "$("$H" samples "$T" | grep panel_6_sided)" >"$T/truncated.brep"
+printf 'ISO-10303-21;\nHEADER;\nbroken\n' >"$T/corrupt.step"
+: >"$T/empty.brep"
+"$H" samples "$T" >/dev/null
+expect_error "missing file" 1 fill "$T/nope.brep" --out "$T/o.brep"
+expect_error "empty file" 1 fill "$T/empty.brep" --out "$T/o.brep"
+expect_error "corrupt brep" 1 fill "$T/corrupt.brep" --out "$T/o.brep"
+expect_error "truncated brep" 1 fill "$T/truncated.brep" --out "$T/o.brep"
+expect_error "corrupt step" 1 fill "$T/corrupt.step" --out "$T/o.brep"
+expect_error "unknown extension" 1 holes "$T/x.txt"
+expect_error "bad method" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --method foo
+expect_error "bad continuity" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --continuity G7
+expect_error "bad edge name" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge0
+expect_error "edges not on a hole" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge9999
+expect_error "hole out of range" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --hole 7
+expect_error "no hole: closed box" 1 fill "$T/closed_box.brep" --out "$T/o.brep"
+expect_error "unknown verb" 1 frobnicate
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
