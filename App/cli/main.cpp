@@ -2,6 +2,9 @@
 // Python one. Exit codes: 0 done; 1 bad usage or input (one clear line on
 // stderr, nothing written); 2 the fill failed (nothing written); 3 the fill was
 // written but did not reach the requested continuity (the report says what it reached).
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -176,6 +179,8 @@ int cmdSamples(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // OCCT's readers and writers print statistics on stdout, which would corrupt --json output.
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
   try {
     if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
       std::printf("holefill 0.1.0; learn backend: %s\n", learn::backendInfo().c_str());

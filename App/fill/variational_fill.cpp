@@ -3,6 +3,8 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <set>
 
 #include "geometry/bspline_basis.h"
@@ -176,6 +178,11 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
   for (double w : c.weight) W += w;
   HF_CHECK(W > 0, "boundary samples carry no length");
 
+  if (std::getenv("HOLEFILL_DEBUG2"))
+    for (size_t k = 0; k + 1 < c.size(); ++k)
+      if ((c.point[k] - c.point[k + 1]).norm() < 1e-12)
+        std::fprintf(stderr, "corner %zu: normal angle %.3g rad, uv gap %.3g\n", k,
+                     std::acos(std::min(1.0, c.normal[k].dot(c.normal[k + 1]))), (c.uv[k] - c.uv[k + 1]).norm());
   VariationalFillResult res;
   Errors bestErr;
   bool haveBest = false;
@@ -190,22 +197,28 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     std::vector<LocalBasis> basis;
     basis.reserve(c.size());
     for (size_t k = 0; k < c.size(); ++k) basis.push_back(localBasis(U, V, c.uv[k].x(), c.uv[k].y(), order));
-    // G0 and G1 rows: fixed for this level.
+    // Penalties are relative to the fairness stiffness, which grows like h^-5 as spans shrink, and
+    // each row is normalized by its own coefficient norm: every constraint then outweighs the
+    // fairness of the poles it touches by the same factor at every refinement level.
+    const double stiffness = A.diagonal().mean();
+    const double n = static_cast<double>(c.size());
+    auto rowWeight = [&](double rho, const Eigen::Matrix<double, M, 1>& coef, size_t k) {
+      return rho * stiffness * (c.weight[k] * n / W) / std::max(coef.squaredNorm(), 1e-300);
+    };
     for (size_t k = 0; k < c.size(); ++k) {
       const LocalBasis& b = basis[k];
-      const double w = c.weight[k] / W;
       for (int d = 0; d < 3; ++d)
-        sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.point[k](d), o.positionWeight * w, true, int(k)});
+        sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.point[k](d), rowWeight(o.positionWeight, b.n, k), true, int(k)});
       if (o.continuity >= Continuity::G1 && c.normalValid[k]) {
-        sys.rows.push_back({b.su, b.sv, b.nu, c.normal[k], 0.0, o.normalWeight * w, true, int(k)});
-        sys.rows.push_back({b.su, b.sv, b.nv, c.normal[k], 0.0, o.normalWeight * w, true, int(k)});
+        sys.rows.push_back({b.su, b.sv, b.nu, c.normal[k], 0.0, rowWeight(o.normalWeight, b.nu, k), true, int(k)});
+        sys.rows.push_back({b.su, b.sv, b.nv, c.normal[k], 0.0, rowWeight(o.normalWeight, b.nv, k), true, int(k)});
       }
     }
     for (size_t k = 0; k < c.referenceUV.size(); ++k) {
       const LocalBasis b = localBasis(U, V, c.referenceUV[k].x(), c.referenceUV[k].y(), 0);
       for (int d = 0; d < 3; ++d)
         sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.referenceXYZ[k](d),
-                            o.referenceWeight / c.referenceUV.size(), false, -1});
+                            o.referenceWeight * stiffness / c.referenceUV.size(), false, -1});
     }
     const size_t fixedRows = sys.rows.size();
     Eigen::VectorXd x;
@@ -224,7 +237,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
           const LocalBasis& b = basis[k];
           Eigen::Matrix<double, M, 1> coef = ab(0) * ab(0) * b.nuu + 2 * ab(0) * ab(1) * b.nuv + ab(1) * ab(1) * b.nvv;
           sys.rows.push_back({b.su, b.sv, coef, c.normal[k], c.curvature[k] * len2,
-                              o.curvatureWeight * c.weight[k] / W, true, int(k)});
+                              rowWeight(o.curvatureWeight, coef, k), true, int(k)});
         }
       }
       assemble(sys, A);
@@ -237,12 +250,22 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
         surf = toSurface(U, V, x);
         const Errors e = measure(surf, c, o);
         if (it == 0 || better(e, levelBest, o)) { levelBest = e; levelX = x; }
+        if (std::getenv("HOLEFILL_DEBUG")) std::fprintf(stderr, "   it %d g0 %.3g g1 %.3g\n", it, e.g0, e.g1);
         if (e.violating.empty()) break;
         for (size_t i = 0; i < sys.rows.size(); ++i)
           if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
       }
       x = levelX;
       surf = toSurface(U, V, x);
+      if (std::getenv("HOLEFILL_DEBUG"))
+        std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu\n", level, sys.nu,
+                     sys.nv, cr, levelBest.g0, levelBest.g1, levelBest.g2, levelBest.violating.size());
+      if (std::getenv("HOLEFILL_DEBUG2"))
+        for (int k : levelBest.violating) {
+          const auto d = surf.derivatives(c.uv[k].x(), c.uv[k].y(), 1);
+          std::fprintf(stderr, "   viol %d uv %.4f %.4f e0 %.3g n.su %.3g n.sv %.3g\n", k, c.uv[k].x(), c.uv[k].y(),
+                       (d[0][0] - c.point[k]).norm(), d[1][0].dot(c.normal[k]), d[0][1].dot(c.normal[k]));
+        }
       if (!haveBest || better(levelBest, bestErr, o) || levelBest.violating.empty()) {
         bestErr = levelBest;
         res.surface = surf;

@@ -48,18 +48,20 @@ struct FillConstraints {
 
 struct VariationalFillOptions {
   Continuity continuity = Continuity::G1;  // highest order imposed
-  double g0Tolerance = 1e-7;     // max |S(uv_k) - B_k| (solve units); DESIGN strict tier is 1e-6 of the scale
-  double g1Tolerance = 5e-4;     // max normal angle (radians); DESIGN strict tier is 1e-3
-  double g2Tolerance = 0.05;     // max relative curvature deviation; DESIGN tier is 0.1
+  double g0Tolerance = 1e-6;     // max |S(uv_k) - B_k| (solve units = hole scale); DESIGN strict tier
+  double g1Tolerance = 1e-3;     // max normal angle (radians); DESIGN strict tier
+  double g2Tolerance = 0.1;      // max relative curvature deviation; DESIGN tier
   FairnessWeights fairness;      // bending 0.3, rate of bending 0.7
-  double positionWeight = 1e5;   // penalty of the G0 term (the multiplier rounds remove its bias)
-  double normalWeight = 1e3;     // penalty of the G1 term
-  double curvatureWeight = 1.0;  // penalty of the G2 term
-  double referenceWeight = 1e-2; // soft pull to interior reference points (MVC), no multiplier
+  // Penalties, relative to the mean diagonal of the fairness matrix and normalized per row;
+  // the augmented-Lagrangian rounds remove their bias, so they only set the convergence rate.
+  double positionWeight = 1e4;   // G0 rows
+  double normalWeight = 1e3;     // G1 rows
+  double curvatureWeight = 1e2;  // G2 rows
+  double referenceWeight = 1e-1; // soft pull to interior reference points (MVC), no multiplier
   int initialSpans = 6;          // spans along the longer domain side before refinement
   int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
   int maxRefinements = 7;        // knot-insertion rounds
-  int multiplierIterations = 12; // augmented-Lagrangian rounds per solve
+  int multiplierIterations = 40; // augmented-Lagrangian rounds per solve
   int curvatureIterations = 3;   // G2 re-linearizations per refinement level
   std::function<bool(double)> progress;  // called with a fraction in [0,1]; return false to cancel
 };

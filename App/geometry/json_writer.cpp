@@ -20,7 +20,7 @@ JsonWriter& JsonWriter::endArray() { out_ << ']'; first_.pop_back(); return *thi
 
 JsonWriter& JsonWriter::key(const std::string& k) {
   separator();
-  value(k);
+  writeString(k);
   out_ << ':';
   afterKey_ = true;
   return *this;
@@ -28,6 +28,11 @@ JsonWriter& JsonWriter::key(const std::string& k) {
 
 JsonWriter& JsonWriter::value(const std::string& v) {
   separator();
+  writeString(v);
+  return *this;
+}
+
+void JsonWriter::writeString(const std::string& v) {
   out_ << '"';
   for (char c : v) {
     switch (c) {
@@ -41,7 +46,6 @@ JsonWriter& JsonWriter::value(const std::string& v) {
     }
   }
   out_ << '"';
-  return *this;
 }
 
 JsonWriter& JsonWriter::value(double v) {

@@ -28,6 +28,7 @@ public:
 
 private:
   void separator();
+  void writeString(const std::string& v);
   std::ostringstream out_;
   std::vector<bool> first_;  // per open container: no element written yet
   bool afterKey_ = false;
