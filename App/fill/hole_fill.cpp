@@ -181,6 +181,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
     }
   } catch (const Error& e) {
+    if (stage == FillStage::Detect) throw;  // the hole could not be named: the caller's mistake
     r.status = FillStatus::Failed;
     r.failedStage = stage;
     r.message = e.what();

@@ -151,12 +151,12 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
   const double area = signedArea(poly);
   Eigen::AlignedBox2d box;
   for (const auto& q : P.uv) box.extend(q);
-  if (!(std::abs(area) > 1e-12 * box.diagonal().squaredNorm()))
-    throw Error("the " + toString(method) + " parameterization maps the hole boundary onto a curve without area: "
-                "the loop is degenerate for this method");
   if (selfIntersects(poly))
     throw Error("the " + toString(method) + " parameterization folds the hole boundary (self-intersecting pcurve); "
                 "try another method");
+  if (!(std::abs(area) > 1e-12 * box.diagonal().squaredNorm()))
+    throw Error("the " + toString(method) + " parameterization maps the hole boundary onto a curve without area: "
+                "the loop is degenerate for this method");
   if (area < 0) {  // mirror u about the domain centre: keeps the domain, reverses orientation
     P.mirroredU = true;
     const double c = fixedDomain ? P.u0 + P.u1 : box.min().x() + box.max().x();

@@ -150,15 +150,16 @@ Errors measure(const BSplineSurface& s, const FillConstraints& c, const Variatio
   return e;
 }
 
+// The worst error relative to its tolerance: the error furthest from its target decides.
+double worstRatio(const Errors& e, const VariationalFillOptions& o) {
+  double w = e.g0 / o.g0Tolerance;
+  if (o.continuity >= Continuity::G1) w = std::max(w, e.g1 / o.g1Tolerance);
+  if (o.continuity == Continuity::G2) w = std::max(w, e.g2 / o.g2Tolerance);
+  return w;
+}
+
 bool better(const Errors& a, const Errors& b, const VariationalFillOptions& o) {
-  // Compare by the worst tolerance ratio: the error that is furthest from its target decides.
-  auto worst = [&](const Errors& e) {
-    double w = e.g0 / o.g0Tolerance;
-    if (o.continuity >= Continuity::G1) w = std::max(w, e.g1 / o.g1Tolerance);
-    if (o.continuity == Continuity::G2) w = std::max(w, e.g2 / o.g2Tolerance);
-    return w;
-  };
-  return worst(a) < worst(b);
+  return worstRatio(a, o) < worstRatio(b, o);
 }
 
 }  // namespace
@@ -251,7 +252,9 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
         const Errors e = measure(surf, c, o);
         if (it == 0 || better(e, levelBest, o)) { levelBest = e; levelX = x; }
         if (std::getenv("HOLEFILL_DEBUG")) std::fprintf(stderr, "   it %d g0 %.3g g1 %.3g\n", it, e.g0, e.g1);
-        if (e.violating.empty()) break;
+        // Keep iterating past the tolerance: the multiplier rounds are cheap and the margin
+        // is what the interior (set only through the boundary) inherits.
+        if (e.violating.empty() && worstRatio(e, o) < o.multiplierMargin) break;
         for (size_t i = 0; i < sys.rows.size(); ++i)
           if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
       }

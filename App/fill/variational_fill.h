@@ -54,14 +54,15 @@ struct VariationalFillOptions {
   FairnessWeights fairness;      // bending 0.3, rate of bending 0.7
   // Penalties, relative to the mean diagonal of the fairness matrix and normalized per row;
   // the augmented-Lagrangian rounds remove their bias, so they only set the convergence rate.
-  double positionWeight = 1e4;   // G0 rows
-  double normalWeight = 1e3;     // G1 rows
-  double curvatureWeight = 1e2;  // G2 rows
+  double positionWeight = 1e5;   // G0 rows
+  double normalWeight = 1e4;     // G1 rows
+  double curvatureWeight = 1e3;  // G2 rows
   double referenceWeight = 1e-1; // soft pull to interior reference points (MVC), no multiplier
   int initialSpans = 6;          // spans along the longer domain side before refinement
   int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
   int maxRefinements = 7;        // knot-insertion rounds
   int multiplierIterations = 40; // augmented-Lagrangian rounds per solve
+  double multiplierMargin = 0.01;// rounds continue until every error is below this fraction of its tolerance
   int curvatureIterations = 3;   // G2 re-linearizations per refinement level
   std::function<bool(double)> progress;  // called with a fraction in [0,1]; return false to cancel
 };

@@ -1,0 +1,153 @@
+#include "fill/hole_fill.h"
+
+#include <gtest/gtest.h>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Pln.hxx>
+
+#include "brep/sample_models.h"
+#include "brep/shape_io.h"
+#include "geometry/error.h"
+#include "geometry/tolerances.h"
+
+using namespace holefill;
+
+namespace {
+void expectStrictG1(const HoleFillResult& r, const std::string& what) {
+  EXPECT_EQ(r.status, FillStatus::Ok) << what << ": " << r.message;
+  EXPECT_LE(r.report.g0Relative, tol::kG0Strict) << what;
+  EXPECT_LE(r.report.g1, tol::kG1Strict) << what;
+  EXPECT_TRUE(r.faceValid) << what;
+  EXPECT_TRUE(r.shapeValid) << what;
+  EXPECT_GE(r.report.samples, 50 * static_cast<int>(r.hole.edges.size())) << what;
+}
+}  // namespace
+
+TEST(HoleFill, G1OnCurvedModelsReachesTheStrictTier) {
+  for (const auto& s : samples::demoSamples())
+    for (ParamMethod m : {ParamMethod::NearestPlane, ParamMethod::MeanValue}) {
+      HoleFillOptions o;
+      o.method = m;
+      expectStrictG1(fillHole(s.shape, 0, o), s.name + "/" + toString(m));
+    }
+}
+
+TEST(HoleFill, ClosingASolidGivesPositiveFiniteVolume) {
+  const HoleFillResult r = fillHole(samples::filletedBoxCorner(), 0);
+  ASSERT_EQ(r.status, FillStatus::Ok) << r.message;
+  EXPECT_TRUE(r.closedSolid);
+  EXPECT_TRUE(std::isfinite(r.volume));
+  // Box 100x80x60 with 12 mm fillets: less than the box, more than the box shrunk by the radius.
+  EXPECT_LT(r.volume, 100.0 * 80 * 60);
+  EXPECT_GT(r.volume, 0.9 * 100.0 * 80 * 60);
+}
+
+TEST(HoleFill, SourceShapeIsNeverModified) {
+  const TopoDS_Shape model = samples::ccExtraordinaryHole(5);
+  const std::string before = shapeToBrepString(model);
+  const HoleFillResult r = fillHole(model, 0);
+  ASSERT_EQ(r.status, FillStatus::Ok) << r.message;
+  EXPECT_EQ(shapeToBrepString(model), before);
+}
+
+TEST(HoleFill, SupportParameterizationReproducesTheCutSurface) {
+  // A hole cut out of one bicubic patch, filled on its exact pcurves: the fill is the patch again.
+  const TopoDS_Shape model = samples::bezierPatchWithHole();
+  HoleFillOptions o;
+  o.method = ParamMethod::Support;
+  o.continuity = Continuity::G2;
+  const HoleFillResult r = fillHole(model, 0, o);
+  ASSERT_EQ(r.status, FillStatus::Ok) << r.message;
+  TopExp_Explorer fx(model, TopAbs_FACE);
+  const Handle(Geom_Surface) original = BRep_Tool::Surface(TopoDS::Face(fx.Current()));
+  const Handle(Geom_Surface) fill = BRep_Tool::Surface(r.face);
+  double worst = 0;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j) {
+      const gp_Pnt p = fill->Value(0.2 + 0.6 * i / 20, 0.2 + 0.6 * j / 20);
+      GeomAPI_ProjectPointOnSurf proj(p, original);
+      worst = std::max(worst, proj.LowerDistance());
+    }
+  EXPECT_LT(worst / r.hole.scale, 1e-6) << "max deviation " << worst;
+}
+
+TEST(HoleFill, UnreachableG2IsReportedNotDowngraded) {
+  // Cylindrical fillets meeting at a corner: their normal curvatures across the two edges
+  // disagree at each corner (0 along one axis, 1/r along the other), so no surface is G2 there.
+  HoleFillOptions o;
+  o.continuity = Continuity::G2;
+  o.solver.maxRefinements = 3;
+  const HoleFillResult r = fillHole(samples::filletedBoxCorner(), 0, o);
+  EXPECT_EQ(r.status, FillStatus::ToleranceNotMet);
+  EXPECT_EQ(r.requested, "G2");
+  EXPECT_NE(r.achieved, "G2");
+  EXPECT_FALSE(r.faultyEdges.empty());
+  EXPECT_NE(r.message.find("requested G2"), std::string::npos);
+}
+
+TEST(HoleFill, SelfIntersectingLoopFailsAtParameterize) {
+  // A figure-of-eight inner loop: its plane projection folds.
+  gp_Pln pln;
+  BRepBuilderAPI_MakeFace base(pln, -10, 10, -10, 10);
+  auto v = [](double x, double y) { return BRepBuilderAPI_MakeVertex(gp_Pnt(x, y, 0)).Vertex(); };
+  const TopoDS_Vertex a = v(-4, -4), b = v(4, 4), c = v(4, -4), d = v(-4, 4);
+  BRepBuilderAPI_MakeWire w;
+  w.Add(BRepBuilderAPI_MakeEdge(a, b));
+  w.Add(BRepBuilderAPI_MakeEdge(b, c));
+  w.Add(BRepBuilderAPI_MakeEdge(c, d));
+  w.Add(BRepBuilderAPI_MakeEdge(d, a));
+  BRepBuilderAPI_MakeFace mf(base.Face());
+  mf.Add(w.Wire());
+  const HoleFillResult r = fillHole(mf.Face(), 0);
+  EXPECT_EQ(r.status, FillStatus::Failed);
+  EXPECT_EQ(r.failedStage, FillStage::Parameterize);
+  EXPECT_NE(r.message.find("self-intersecting"), std::string::npos) << r.message << " " << toJson(r);
+  EXPECT_TRUE(r.face.IsNull());
+}
+
+TEST(HoleFill, TwoEdgeDegenerateLoopFailsClearly) {
+  // Two coincident edges forming a slit: a loop without area.
+  gp_Pln pln;
+  BRepBuilderAPI_MakeFace base(pln, -10, 10, -10, 10);
+  const TopoDS_Vertex a = BRepBuilderAPI_MakeVertex(gp_Pnt(-3, 0, 0)).Vertex();
+  const TopoDS_Vertex b = BRepBuilderAPI_MakeVertex(gp_Pnt(3, 0, 0)).Vertex();
+  BRepBuilderAPI_MakeWire w;
+  w.Add(BRepBuilderAPI_MakeEdge(a, b));
+  w.Add(BRepBuilderAPI_MakeEdge(b, a));
+  BRepBuilderAPI_MakeFace mf(base.Face());
+  mf.Add(w.Wire());
+  const HoleFillResult r = fillHole(mf.Face(), 0);
+  EXPECT_EQ(r.status, FillStatus::Failed);
+  EXPECT_EQ(r.failedStage, FillStage::Parameterize);
+  EXPECT_FALSE(r.message.empty());
+}
+
+TEST(HoleFill, NoHolesAndBadNamesThrow) {
+  EXPECT_THROW(fillHole(samples::byName("closed_box"), 0), Error);
+  EXPECT_THROW(fillHole(TopoDS_Shape(), 0), Error);
+  EXPECT_THROW(fillHole(samples::boxMinusFace(), 3), Error);
+  EXPECT_THROW(fillHole(samples::boxMinusFace(), std::vector<int>{999}), Error);
+}
+
+TEST(HoleFill, CancelLeavesNoResult) {
+  HoleFillOptions o;
+  o.progress = [](double f) { return f < 0.2; };
+  const HoleFillResult r = fillHole(samples::ccExtraordinaryHole(5), 0, o);
+  EXPECT_EQ(r.status, FillStatus::Cancelled);
+  EXPECT_TRUE(r.face.IsNull());
+}
+
+TEST(HoleFill, JsonReportHasTheDesignFields) {
+  const std::string j = toJson(fillHole(samples::panelWithHole(6, 11), 0));
+  for (const char* k : {"\"g0\"", "\"g0_relative\"", "\"g1\"", "\"g2\"", "\"requested\"", "\"achieved\"", "\"str\"",
+                        "\"g0_strict\"", "\"faulty_edges\"", "\"timings\"", "\"parameterize\"", "\"solve\""})
+    EXPECT_NE(j.find(k), std::string::npos) << k;
+}

@@ -1,0 +1,98 @@
+#include "fill/parameterizer.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/error.h"
+#include "geometry/polygon2d.h"
+
+using namespace holefill;
+
+TEST(Polygon2d, MeanValueCoordinatesReproduceLinearFunctions) {
+  // A non-convex polygon: MVC stay well defined inside it.
+  const Polygon2 p = {{0, 0}, {4, 0}, {4, 3}, {2, 1}, {0, 3}};
+  for (const Eigen::Vector2d x : {Eigen::Vector2d(1, 0.5), Eigen::Vector2d(3.2, 1.5), Eigen::Vector2d(0.5, 2.0)}) {
+    ASSERT_TRUE(contains(p, x));
+    const Eigen::VectorXd w = meanValueCoordinates(p, x);
+    EXPECT_NEAR(w.sum(), 1.0, 1e-12);
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+    for (int i = 0; i < w.size(); ++i) r += w(i) * p[i];
+    EXPECT_LT((r - x).norm(), 1e-12);
+  }
+}
+
+TEST(Polygon2d, OrientationAndSelfIntersection) {
+  const Polygon2 square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_NEAR(signedArea(square), 1.0, 1e-15);
+  EXPECT_FALSE(selfIntersects(square));
+  const Polygon2 bowtie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  EXPECT_TRUE(selfIntersects(bowtie));
+  const Polygon2 withRepeats = {{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+  EXPECT_FALSE(selfIntersects(withRepeats));
+}
+
+namespace {
+// Samples of a planar loop (a 3:1 rectangle tilted in space), corners at the rectangle's vertices.
+std::vector<BoundarySample> tiltedRectangle(Hole& hole) {
+  const Eigen::Vector3d o(1, 2, 3), a = Eigen::Vector3d(1, 1, 0).normalized() * 3, b = Eigen::Vector3d(0, 0, 1);
+  const Eigen::Vector3d corners[4] = {o, o + a, o + a + b, o + b};
+  std::vector<BoundarySample> s;
+  hole.edges.resize(4);
+  for (int e = 0; e < 4; ++e) {
+    hole.edges[e].cornerAtStart = true;
+    for (int i = 0; i <= 10; ++i) {
+      BoundarySample x;
+      x.point = corners[e] + (corners[(e + 1) % 4] - corners[e]) * (i / 10.0);
+      x.weight = 0.1;
+      x.edge = e;
+      s.push_back(x);
+    }
+  }
+  hole.corners = 4;
+  return s;
+}
+}  // namespace
+
+TEST(Parameterizer, NearestPlaneIsAnIsometryOnPlanarLoops) {
+  Hole hole;
+  const auto s = tiltedRectangle(hole);
+  const Parameterization p = parameterize(hole, s, ParamMethod::NearestPlane);
+  ASSERT_EQ(p.uv.size(), s.size());
+  for (size_t i = 0; i < s.size(); ++i)
+    for (size_t j = 0; j < s.size(); j += 7)
+      EXPECT_NEAR((p.uv[i] - p.uv[j]).norm(), (s[i].point - s[j].point).norm(), 1e-12);
+  EXPECT_GT(signedArea(Polygon2(p.uv.begin(), p.uv.end())), 0.0);  // counter-clockwise
+  EXPECT_LE(p.u0, p.uv[0].x());
+}
+
+TEST(Parameterizer, MeanValueMapsCornersToARegularPolygon) {
+  Hole hole;
+  const auto s = tiltedRectangle(hole);
+  const Parameterization p = parameterize(hole, s, ParamMethod::MeanValue);
+  ASSERT_EQ(p.cornerSamples.size(), 4u);
+  const double side = (p.uv[p.cornerSamples[0]] - p.uv[p.cornerSamples[1]]).norm();
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_NEAR((p.uv[p.cornerSamples[c]] - p.uv[p.cornerSamples[(c + 1) % 4]]).norm(), side, 1e-12);
+    EXPECT_NEAR((p.uv[p.cornerSamples[c]] - p.uv[p.cornerSamples[(c + 2) % 4]]).norm(), side * std::sqrt(2.0), 1e-12);
+  }
+  // Chord length along a side: the midpoint sample of the first side is the side's midpoint.
+  EXPECT_LT((p.uv[5] - 0.5 * (p.uv[0] + p.uv[10])).norm(), 1e-12);
+  // Interior reference points interpolate the planar boundary: they lie in its plane.
+  ASSERT_FALSE(p.interiorXYZ.empty());
+  const Eigen::Vector3d n = (s[10].point - s[0].point).cross(s[30].point - s[0].point).normalized();
+  for (const auto& x : p.interiorXYZ) EXPECT_NEAR((x - s[0].point).dot(n), 0.0, 1e-9);
+}
+
+TEST(Parameterizer, DegenerateLoopIsAClearError) {
+  Hole hole;
+  hole.edges.resize(2);
+  std::vector<BoundarySample> s;
+  for (int e = 0; e < 2; ++e)
+    for (int i = 0; i <= 10; ++i) {
+      BoundarySample x;
+      x.point = Eigen::Vector3d(e == 0 ? i : 10 - i, 0, 0);  // out along a segment and back
+      x.weight = 1;
+      x.edge = e;
+      s.push_back(x);
+    }
+  EXPECT_THROW(parameterize(hole, s, ParamMethod::NearestPlane), Error);
+}
