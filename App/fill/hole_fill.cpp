@@ -77,7 +77,14 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     for (size_t i = 0; i < det.holes.size(); ++i)
       if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
     r.timings.detect = since(t);
-    if (!progress(0.05)) { r.status = FillStatus::Cancelled; return r; }
+    auto cancelled = [&] {
+      r.status = FillStatus::Cancelled;
+      r.failedStage = stage;
+      r.message = "cancelled by the user";
+      r.timings.total = since(t0);
+      return r;
+    };
+    if (!progress(0.05)) return cancelled();
 
     stage = FillStage::Sample;
     t = Clock::now();
@@ -107,7 +114,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
     for (const auto& w : P.warnings) r.warnings.push_back(w);
     r.timings.parameterize = since(t);
-    if (!progress(0.1)) { r.status = FillStatus::Cancelled; return r; }
+    if (!progress(0.1)) return cancelled();
 
     stage = FillStage::Solve;
     t = Clock::now();
@@ -133,7 +140,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     so.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
     const VariationalFillResult vf = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, so);
     for (const auto& w : vf.warnings) r.warnings.push_back(w);
-    if (vf.cancelled) { r.status = FillStatus::Cancelled; r.message = "cancelled by the user"; return r; }
+    if (vf.cancelled) return cancelled();
     BSplineSurface surf = vf.surface;
     for (int i = 0; i < surf.poles.rows(); ++i) surf.poles.row(i) = (centre + scale * surf.poles.row(i).transpose()).transpose();
     r.polesU = surf.numU();

@@ -61,7 +61,8 @@ std::string report(const std::string& faceBrep, const std::string& modelBrep, co
     if (faces != 1) throw Error("continuityReport needs exactly one face, got " + std::to_string(faces));
     HoleDetectionOptions d;
     d.includeOuterBoundary = true;
-    const Hole& hole = holeContainingEdges(detectHoles(model, d), edges);
+    const HoleDetectionResult detection = detectHoles(model, d);
+    const Hole& hole = holeContainingEdges(detection, edges);
     const ContinuityReport r = continuityReport(f, hole);
     JsonWriter j;
     j.beginObject().field("samples", r.samples).field("scale", r.scale).field("g0", r.g0).field("g0_relative", r.g0Relative);

@@ -1,0 +1,171 @@
+"""The Fill task panel: the hole (from the selection; one edge names its loop),
+method, continuity and tolerance, a Preview that shows the fill and its continuity
+report, OK to keep it, Cancel to leave the document exactly as it was."""
+import json
+
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore, QtWidgets
+
+import HoleFill
+from HoleFill import fill_feature
+
+
+def _selectedHole():
+    """(object, [edge names]) from the current selection, or (None, [])."""
+    for sel in FreeCADGui.Selection.getSelectionEx():
+        edges = [n for n in sel.SubElementNames if n.startswith("Edge")]
+        if edges and hasattr(sel.Object, "Shape"):
+            return sel.Object, edges
+    return None, []
+
+
+def formatReport(report):
+    """A short human-readable table of a fill report."""
+    lines = ["Status: %s — %s" % (report["status"], report["message"]),
+             "Requested %s, achieved %s (method %s)" % (report["requested"], report["achieved"], report["method"]),
+             "N = %d corners, %d edges, scale %.4g" % (report["corners"], len(report["edges"]), report["scale"]),
+             "G0 %.3g (%.2g of scale)   G1 %.3g rad   G2 %.3g" % (report["g0"], report["g0_relative"], report["g1"],
+                                                                  report["g2"]),
+             "Poles %dx%d after %d refinements; %.2f s" % (report["poles_u"], report["poles_v"], report["refinements"],
+                                                          report["timings"]["total"])]
+    if report["faulty_edges"]:
+        lines.append("Worst edges: " + ", ".join("Edge%d" % e for e in report["faulty_edges"]))
+    return "\n".join(lines)
+
+
+class FillTaskPanel:
+    def __init__(self, existing=None):
+        self.doc = FreeCAD.ActiveDocument
+        self.obj = existing
+        self.form = QtWidgets.QWidget()
+        self.form.setWindowTitle("Fill hole")
+        lay = QtWidgets.QFormLayout(self.form)
+        self.holeLabel = QtWidgets.QLabel()
+        self.holeLabel.setWordWrap(True)
+        lay.addRow("Hole:", self.holeLabel)
+        self.useSel = QtWidgets.QPushButton("Use selected edges")
+        lay.addRow(self.useSel)
+        self.method = QtWidgets.QComboBox()
+        self.method.addItems(["np", "mvc"])
+        self.method.setToolTip("np: nearest plane projection; mvc: regular N-gon with mean value mapping")
+        lay.addRow("Parameterization:", self.method)
+        self.continuity = QtWidgets.QComboBox()
+        self.continuity.addItems(["G0", "G1", "G2"])
+        self.continuity.setCurrentText("G1")
+        lay.addRow("Continuity:", self.continuity)
+        self.tolerance = QtWidgets.QDoubleSpinBox()
+        self.tolerance.setDecimals(7)
+        self.tolerance.setRange(0.0, 1e3)
+        self.tolerance.setSpecialValueText("auto (1e-6 of hole size)")
+        lay.addRow("G0 tolerance:", self.tolerance)
+        self.output = QtWidgets.QComboBox()
+        self.output.addItems(["Face", "Sewn"])
+        lay.addRow("Output:", self.output)
+        self.preview = QtWidgets.QPushButton("Preview")
+        lay.addRow(self.preview)
+        self.report = QtWidgets.QPlainTextEdit()
+        self.report.setReadOnly(True)
+        self.report.setMinimumHeight(140)
+        lay.addRow(self.report)
+        self.useSel.clicked.connect(self.takeSelection)
+        self.preview.clicked.connect(self.runPreview)
+
+        self.source, self.edges = None, []
+        self.created = False
+        self.doc.openTransaction("Fill hole")
+        if existing is not None:
+            self.source, self.edges = existing.Source[0], list(existing.Source[1])
+            self.method.setCurrentText(existing.Method)
+            self.continuity.setCurrentText(existing.Continuity)
+            self.tolerance.setValue(float(existing.Tolerance))
+            self.output.setCurrentText(existing.Output)
+            if existing.Report:
+                self.report.setPlainText(formatReport(json.loads(existing.Report)))
+        else:
+            self.takeSelection()
+        self.showHole()
+
+    def takeSelection(self):
+        src, edges = _selectedHole()
+        if src is not None:
+            self.source, self.edges = src, edges
+        self.showHole()
+
+    def showHole(self):
+        if self.source is None:
+            self.holeLabel.setText("Select one edge of a hole in the 3D view, then press 'Use selected edges'.")
+            return
+        try:
+            holes = HoleFill.findHoles(self.source.Shape, includeOuter=True)
+            idx = {int(e[4:]) for e in self.edges}
+            hole = next((h for h in holes if idx <= set(h["edge_indices"])), None)
+        except HoleFill.HoleFillError as e:
+            hole = None
+            self.report.setPlainText(str(e))
+        if hole is None:
+            self.holeLabel.setText("%s: %s is not on one hole loop" % (self.source.Label, ", ".join(self.edges)))
+        else:
+            self.holeLabel.setText("%s: %d-sided hole, %d edges (%s)" % (
+                self.source.Label, hole["corners"], len(hole["edges"]), ", ".join(hole["edges"])))
+
+    def runPreview(self):
+        if self.source is None:
+            self.report.setPlainText("No hole selected: click an edge of the hole first.")
+            return False
+        if self.obj is None:
+            self.obj = self.doc.addObject("Part::FeaturePython", "Fill")
+            self.created = True
+            fill_feature.FillFeature(self.obj)
+            from HoleFillGui import view_provider
+            view_provider.FillViewProvider(self.obj.ViewObject)
+        self.obj.Source = (self.source, self.edges)
+        self.obj.Method = self.method.currentText()
+        self.obj.Continuity = self.continuity.currentText()
+        self.obj.Tolerance = self.tolerance.value()
+        self.obj.Output = self.output.currentText()
+        dlg = QtWidgets.QProgressDialog("Filling hole...", "Cancel", 0, 100, self.form)
+        dlg.setWindowModality(QtCore.Qt.WindowModal)
+        dlg.setMinimumDuration(500)
+
+        def progress(f):
+            dlg.setValue(int(100 * f))
+            QtWidgets.QApplication.processEvents()
+            return not dlg.wasCanceled()
+
+        fill_feature.progressHook = progress
+        try:
+            self.obj.touch()
+            self.doc.recompute()
+        finally:
+            fill_feature.progressHook = None
+            dlg.close()
+        if self.obj.isValid() and self.obj.Report:
+            self.report.setPlainText(formatReport(json.loads(self.obj.Report)))
+            if self.source.ViewObject is not None and self.obj.Output == "Sewn":
+                self.source.ViewObject.Visibility = False
+            return True
+        self.report.setPlainText("Fill failed: %s" % (self.obj.getStatusString() or "see the report view"))
+        return False
+
+    def accept(self):
+        if self.obj is None or not self.obj.isValid() or self.obj.isTouched():
+            if not self.runPreview():
+                return False  # keep the panel open: the report says what went wrong
+        self.doc.commitTransaction()
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def reject(self):
+        name = self.obj.Name if (self.obj is not None and self.created) else None
+        self.doc.abortTransaction()
+        if name and self.doc.getObject(name) is not None:  # undo disabled: remove the preview by hand
+            self.doc.removeObject(name)
+        if self.source is not None and self.source.ViewObject is not None:
+            self.source.ViewObject.Visibility = True
+        self.doc.recompute()
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)

@@ -1,0 +1,153 @@
+"""HoleFill: fill N-sided holes in B-rep models with one trimmed B-spline face.
+
+Macro-friendly API (camelCase like FreeCAD's own):
+
+    import HoleFill
+    holes = HoleFill.findHoles(obj.Shape)                    # list of Hole
+    face, report = HoleFill.fillHole(obj.Shape, holes[0], continuity="G1")
+    print(report["achieved"], report["g0"], report["g1"])
+    fill = HoleFill.makeFill(obj, ["Edge3"], method="np")     # parametric document object
+
+Shapes cross into the C++ core (module HoleFillApp) as BREP text and never come
+back modified: every result is a new shape. Reports are plain dicts with the
+fields of DESIGN.md (g0, g0_relative, g1, g2, requested, achieved, str, per_edge,
+timings, ...). Errors raise HoleFillError with a message that says what to do.
+"""
+import json
+
+import HoleFillApp
+
+HoleFillError = HoleFillApp.HoleFillError
+METHODS = ("np", "mvc")
+CONTINUITIES = ("G0", "G1", "G2")
+
+__all__ = ["findHoles", "fillHole", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+           "CONTINUITIES"]
+
+
+class Hole(dict):
+    """One free-boundary loop: index (1-based), edges ("EdgeK" names in loop order),
+    edgeIndices, corners (N), length and scale (model units), supportFaces."""
+
+    @property
+    def edges(self):
+        return self["edges"]
+
+    @property
+    def corners(self):
+        return self["corners"]
+
+    def __repr__(self):
+        return "Hole(%d: N=%d, %d edges, length %.6g)" % (self["index"], self["corners"], len(self["edges"]),
+                                                          self["length"])
+
+
+def _brep(shape):
+    if shape is None or shape.isNull():
+        raise HoleFillError("the shape is empty: select a shell, an open solid or a compound of faces")
+    return shape.exportBrepToString()
+
+
+def _shape(brep):
+    import Part
+    s = Part.Shape()
+    s.importBrepFromString(brep.decode() if isinstance(brep, bytes) else brep)
+    return s
+
+
+def _hole(d):
+    h = Hole(d)
+    h["edgeIndices"] = d["edge_indices"]
+    h["supportFaces"] = d["support_faces"]
+    return h
+
+
+def findHoles(shape, includeOuter=False, cornerAngle=5.0):
+    """Holes of a shape (shell, open solid, compound of faces): a list of Hole.
+    Outer boundaries of open sheets are left out unless includeOuter is True.
+    cornerAngle (degrees) is the tangent break that counts as a corner."""
+    d = json.loads(HoleFillApp.findHoles(_brep(shape), includeOuter, float(cornerAngle)))
+    holes = [_hole(h) for h in d["holes"]]
+    if includeOuter:
+        known = {tuple(h["edge_indices"]) for h in d["holes"]}
+        holes += [_hole(h) for h in d["outer_boundaries"] if tuple(h["edge_indices"]) not in known]
+    return holes
+
+
+def _edgeIndices(shape, hole):
+    """Accepts a Hole, a 1-based hole number, "EdgeK" names or 1-based edge indices."""
+    if isinstance(hole, dict):
+        return list(hole["edge_indices"])
+    if isinstance(hole, int):
+        holes = findHoles(shape)
+        if not holes:
+            raise HoleFillError("the shape has no holes")
+        if hole < 1 or hole > len(holes):
+            raise HoleFillError("hole %d does not exist: the shape has %d hole(s)" % (hole, len(holes)))
+        return list(holes[hole - 1]["edge_indices"])
+    if isinstance(hole, str):
+        hole = [hole]
+    out = []
+    for e in hole:
+        if isinstance(e, str):
+            if not e.startswith("Edge") or not e[4:].isdigit():
+                raise HoleFillError("'%s' is not an edge name: use names like 'Edge3'" % e)
+            out.append(int(e[4:]))
+        else:
+            out.append(int(e))
+    if not out:
+        raise HoleFillError("no edges given: name at least one edge of the hole")
+    return out
+
+
+def fillHole(shape, hole=1, method="np", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+             curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False):
+    """Fill one hole of `shape` with a trimmed B-spline face.
+
+    hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
+    method: "np" (nearest plane) or "mvc" (polygon / mean value mapping).
+    continuity: "G0", "G1" or "G2"; tolerance (model units, 0 = 1e-6 x hole size) for G0,
+    angularTolerance (radians) for G1, curvatureTolerance (relative) for G2.
+    progress: callable(fraction) -> bool; return False to cancel.
+    Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
+    The report says what was achieved; a fill that misses the request is returned with
+    report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
+    if method not in METHODS + ("support",):
+        raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
+    if continuity not in CONTINUITIES:
+        raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
+    edges = _edgeIndices(shape, hole)
+    face, model, rep = HoleFillApp.fillHole(_brep(shape), edges, method, continuity, float(tolerance),
+                                           float(angularTolerance), float(curvatureTolerance),
+                                           int(maxControlPoints), progress)
+    report = json.loads(rep)
+    if report["status"] in ("failed", "cancelled"):
+        where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
+        raise HoleFillError("fill %s at stage '%s': %s%s" % (report["status"], report["failed_stage"],
+                                                             report["message"], " (edges %s)" % where if where else ""))
+    f = _shape(face).Faces[0]
+    if sewn:
+        return f, _shape(model), report
+    return f, report
+
+
+def continuityReport(face, shape, hole=None):
+    """G0/G1/G2 of `face` (any face, e.g. a Surface Filling result) against a hole of `shape`.
+    hole as in fillHole; None takes the only hole of the shape."""
+    if hole is None:
+        holes = findHoles(shape)
+        if len(holes) != 1:
+            raise HoleFillError("the shape has %d holes: say which one" % len(holes))
+        hole = holes[0]
+    return json.loads(HoleFillApp.continuityReport(_brep(face), _brep(shape), _edgeIndices(shape, hole)))
+
+
+def makeFill(source, edges=None, method="np", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+             output="Face", doc=None):
+    """Create a parametric Fill object on `source` (a document object with a Shape).
+    edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.
+    The object recomputes when the source changes; the source is never modified.
+    Runs inside an undo transaction; on failure the document is left as it was and
+    HoleFillError is raised."""
+    from HoleFill import fill_feature
+    return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc)

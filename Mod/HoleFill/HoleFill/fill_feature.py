@@ -1,0 +1,113 @@
+"""The parametric Fill document object (App side): a Part::FeaturePython whose
+Shape is the filling face (or the source with the face sewn in), recomputed from
+its Source link whenever the source changes. The source is only read."""
+import json
+
+import FreeCAD
+
+import HoleFill
+
+
+# Set by the Gui while it recomputes a Fill: callable(fraction) -> bool (False cancels).
+progressHook = None
+
+
+class FillFeature:
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setupProperties(obj)
+
+    def setupProperties(self, obj):
+        props = obj.PropertiesList
+
+        def add(kind, name, group, doc, default=None):
+            if name not in props:
+                obj.addProperty(kind, name, group, doc)
+                if default is not None:
+                    setattr(obj, name, default)
+
+        add("App::PropertyLinkSub", "Source", "Fill", "Object and edges of the hole (one edge names its whole loop)")
+        add("App::PropertyEnumeration", "Method", "Fill", "Parameterization of the trimming curve")
+        if not obj.getEnumerationsOfProperty("Method"):
+            obj.Method = list(HoleFill.METHODS)
+        add("App::PropertyEnumeration", "Continuity", "Fill", "Requested continuity with the surrounding faces")
+        if not obj.getEnumerationsOfProperty("Continuity"):
+            obj.Continuity = list(HoleFill.CONTINUITIES)
+            obj.Continuity = "G1"
+        add("App::PropertyLength", "Tolerance", "Fill", "G0 tolerance (0: 1e-6 of the hole size)", 0.0)
+        add("App::PropertyFloat", "AngularTolerance", "Fill", "G1 tolerance in radians", 1e-3)
+        add("App::PropertyEnumeration", "Output", "Fill", "Face: the patch alone; Sewn: the source with the patch sewn in")
+        if not obj.getEnumerationsOfProperty("Output"):
+            obj.Output = ["Face", "Sewn"]
+        for name, doc in (("Status", "ok, tolerance_not_met or the failure"), ("Achieved", "continuity reached"),
+                          ("Report", "full continuity report (JSON)")):
+            add("App::PropertyString", name, "Report", doc)
+            obj.setEditorMode(name, 1)
+        for name, doc in (("G0", "max position gap (model units)"), ("G1", "max normal angle (rad)"),
+                          ("G2", "max relative curvature deviation")):
+            add("App::PropertyFloat", name, "Report", doc)
+            obj.setEditorMode(name, 1)
+
+    def onDocumentRestored(self, obj):
+        self.setupProperties(obj)
+
+    def execute(self, obj):
+        src, subs = obj.Source if obj.Source else (None, [])
+        if src is None or not hasattr(src, "Shape"):
+            raise HoleFill.HoleFillError("Fill has no source object with a shape")
+        edges = [s for s in subs if s.startswith("Edge")] or 1
+        face, model, report = HoleFill.fillHole(src.Shape, edges, method=obj.Method, continuity=obj.Continuity,
+                                                tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
+                                                sewn=True, progress=progressHook)
+        obj.Shape = face if obj.Output == "Face" else model
+        obj.Status = report["status"]
+        obj.Achieved = report["achieved"]
+        obj.G0, obj.G1, obj.G2 = report["g0"], report["g1"], report["g2"]
+        obj.Report = json.dumps(report)
+        if report["status"] != "ok":
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, report["message"]))
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def makeFill(source, edges=None, method="np", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+             output="Face", doc=None):
+    if source is None or not hasattr(source, "Shape"):
+        raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
+    doc = doc or source.Document
+    if isinstance(edges, str):
+        edges = [edges]
+    if not edges:
+        holes = HoleFill.findHoles(source.Shape)
+        if not holes:
+            raise HoleFill.HoleFillError("%s has no holes" % source.Label)
+        edges = holes[0]["edges"][:1]
+    doc.openTransaction("Fill hole")
+    obj = None
+    try:
+        obj = doc.addObject("Part::FeaturePython", "Fill")
+        FillFeature(obj)
+        obj.Source = (source, list(edges))
+        obj.Method = method
+        obj.Continuity = continuity
+        obj.Tolerance = tolerance
+        obj.AngularTolerance = angularTolerance
+        obj.Output = output
+        if FreeCAD.GuiUp:
+            from HoleFillGui import view_provider
+            view_provider.FillViewProvider(obj.ViewObject)
+        doc.recompute()
+        if not obj.isValid():
+            raise HoleFill.HoleFillError("the fill failed: %s" % (obj.getStatusString() or "see the report view"))
+    except Exception:
+        # Leave the document exactly as it was, with or without undo enabled.
+        if obj is not None and doc.getObject(obj.Name) is not None:
+            doc.removeObject(obj.Name)
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+    return obj

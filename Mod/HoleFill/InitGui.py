@@ -1,0 +1,29 @@
+# HoleFill workbench registration. FreeCAD exec's this file inside a function:
+# names defined here are not visible later, so imports happen inside methods.
+
+
+class HoleFillWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench)
+    MenuText = "HoleFill"
+    ToolTip = "Fill N-sided holes with trimmed B-spline faces (G0/G1/G2) and inspect their continuity"
+
+    def __init__(self):
+        import HoleFillGui
+        self.__class__.Icon = HoleFillGui.icon("HoleFill.svg")
+
+    def Initialize(self):
+        from HoleFillGui import commands
+        commands.register()
+        self.appendToolbar("HoleFill", commands.COMMANDS)
+        self.appendMenu("HoleFill", commands.COMMANDS)
+
+    def Activated(self):
+        pass
+
+    def Deactivated(self):
+        pass
+
+    def GetClassName(self):
+        return "Gui::PythonWorkbench"
+
+
+Gui.addWorkbench(HoleFillWorkbench())  # noqa: F821

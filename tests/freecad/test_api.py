@@ -1,0 +1,148 @@
+"""Headless FreeCAD tests of the HoleFill Python API and the Fill document object (freecadcmd)."""
+import math
+import os
+
+import FreeCAD
+import Part
+
+import fcharness
+import HoleFill
+import HoleFillApp
+
+SAMPLES = os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples")
+DEMO = ("cc_valence5", "filleted_box_corner", "panel_6_sided")
+
+
+def load(name):
+    s = Part.Shape()
+    s.read(os.path.join(SAMPLES, name + ".brep"))
+    return s
+
+
+def expect_error(fn, *words):
+    try:
+        fn()
+    except HoleFill.HoleFillError as e:
+        for w in words:
+            assert w in str(e), "message %r lacks %r" % (str(e), w)
+        return str(e)
+    raise AssertionError("no HoleFillError raised")
+
+
+def test_find_holes_on_samples():
+    expected = {"cc_valence5": (5, 10), "filleted_box_corner": (3, 3), "panel_6_sided": (6, 6)}
+    for name, (n, edges) in expected.items():
+        holes = HoleFill.findHoles(load(name))
+        assert len(holes) == 1, (name, holes)
+        assert holes[0].corners == n and len(holes[0].edges) == edges, (name, holes[0])
+    # Outer boundary of the panel only on request.
+    assert len(HoleFill.findHoles(load("panel_6_sided"), includeOuter=True)) == 2
+
+
+def test_g1_fill_meets_strict_tier_and_sews_valid():
+    for name in DEMO:
+        shape = load(name)
+        face, sewn, rep = HoleFill.fillHole(shape, 1, continuity="G1", sewn=True)
+        assert rep["status"] == "ok", rep["message"]
+        assert rep["g0_relative"] <= 1e-6 and rep["g1"] <= 1e-3, (name, rep["g0_relative"], rep["g1"])
+        assert face.isValid() and sewn.isValid(), name
+        assert isinstance(face.Surface, Part.BSplineSurface)
+        # The face shares the hole's edges: sewn model has no free edge on the hole.
+        assert len(sewn.Faces) == len(shape.Faces) + 1
+        # Independent check through FreeCAD: the fill's boundary lies on the hole edges.
+        hole_edges = [shape.Edges[i - 1] for i in rep["edges"]]
+        for e in face.Edges:
+            for k in range(11):
+                p = e.valueAt(e.FirstParameter + (e.LastParameter - e.FirstParameter) * k / 10)
+                d = min(h.distToShape(Part.Vertex(p))[0] for h in hole_edges)
+                assert d <= 1e-6 * rep["scale"] + 1e-7, (name, d)
+
+
+def test_closing_a_solid_gives_positive_volume():
+    face, sewn, rep = HoleFill.fillHole(load("filleted_box_corner"), 1, sewn=True)
+    assert rep["closed_solid"]
+    assert sewn.ShapeType == "Solid" and sewn.isClosed()
+    assert math.isfinite(sewn.Volume) and 0.9 * 480000 < sewn.Volume < 480000, sewn.Volume
+
+
+def test_edge_names_select_the_loop():
+    shape = load("cc_valence5")
+    hole = HoleFill.findHoles(shape)[0]
+    face, rep = HoleFill.fillHole(shape, [hole.edges[3]], method="mvc")
+    assert sorted(rep["edges"]) == sorted(hole["edgeIndices"])
+    assert rep["method"] == "mvc"
+
+
+def test_continuity_report_of_our_face_matches_fill_report():
+    shape = load("panel_6_sided")
+    face, rep = HoleFill.fillHole(shape)
+    cr = HoleFill.continuityReport(face, shape)
+    assert abs(cr["g0"] - rep["g0"]) <= 1e-9 + 0.05 * rep["g0"], (cr["g0"], rep["g0"])
+    assert cr["g1"] <= 1e-3
+
+
+def test_unreachable_g2_is_reported_not_downgraded():
+    face, rep = HoleFill.fillHole(load("filleted_box_corner"), 1, continuity="G2", maxControlPoints=600)
+    assert rep["status"] == "tolerance_not_met" and rep["requested"] == "G2" and rep["achieved"] != "G2", rep
+
+
+def test_bad_inputs_give_clear_errors_and_modify_nothing():
+    shape = load("panel_6_sided")
+    before = shape.exportBrepToString()
+    expect_error(lambda: HoleFill.findHoles(Part.Shape()), "empty")
+    expect_error(lambda: HoleFill.fillHole(load("closed_box")), "no holes")
+    expect_error(lambda: HoleFill.fillHole(shape, ["Edge999"]), "no hole loop contains")
+    expect_error(lambda: HoleFill.fillHole(shape, ["Face1"]), "not an edge name")
+    expect_error(lambda: HoleFill.fillHole(shape, 1, method="foo"), "unknown method")
+    expect_error(lambda: HoleFill.fillHole(shape, 1, continuity="G5"), "unknown continuity")
+    expect_error(lambda: HoleFillApp.findHoles("garbage, not BREP"), "BREP")
+    nan = Part.Vertex(FreeCAD.Vector(float("nan"), 0, 0))
+    expect_error(lambda: HoleFill.findHoles(Part.Compound([shape.copy(), nan])), "NaN")
+    expect_error(lambda: HoleFill.fillHole(shape, 1, progress=lambda f: f < 0.2), "cancelled")
+    assert shape.exportBrepToString() == before
+
+
+def test_make_fill_is_parametric_and_leaves_source_alone():
+    doc = FreeCAD.newDocument("HoleFillTest")
+    src = doc.addObject("Part::Feature", "Panel")
+    src.Shape = load("panel_6_sided")
+    doc.recompute()
+    before = src.Shape.exportBrepToString()
+    hole = HoleFill.findHoles(src.Shape)[0]
+    fill = HoleFill.makeFill(src, [hole.edges[0]], continuity="G1")
+    assert fill.isValid() and fill.Status == "ok", fill.Status
+    assert fill.Shape.ShapeType == "Face" and fill.G1 <= 1e-3
+    assert src.Shape.exportBrepToString() == before
+    area0 = fill.Shape.Area
+    # Move the source: the fill follows on recompute.
+    src.Placement.Base = FreeCAD.Vector(0, 0, 25)
+    doc.recompute()
+    assert fill.isValid()
+    assert abs(fill.Shape.BoundBox.ZMin - (area0 and src.Shape.BoundBox.ZMin)) < 1e3
+    assert abs(fill.Shape.Area - area0) < 1e-3 * area0
+    assert fill.Shape.BoundBox.Center.z > 20
+    fill.Output = "Sewn"
+    doc.recompute()
+    assert fill.Shape.isValid() and len(fill.Shape.Faces) == 2
+    FreeCAD.closeDocument(doc.Name)
+
+
+def test_failed_make_fill_leaves_document_as_it_was():
+    doc = FreeCAD.newDocument("HoleFillFail")
+    src = doc.addObject("Part::Feature", "Box")
+    src.Shape = load("closed_box")
+    doc.recompute()
+    names = [o.Name for o in doc.Objects]
+    expect_error(lambda: HoleFill.makeFill(src), "no holes")
+    assert [o.Name for o in doc.Objects] == names
+    # A fill object that is created and then fails to compute is taken out again.
+    panel = doc.addObject("Part::Feature", "Panel")
+    panel.Shape = load("panel_6_sided")
+    doc.recompute()
+    names = [o.Name for o in doc.Objects]
+    expect_error(lambda: HoleFill.makeFill(panel, ["Edge999"]), "fill failed")
+    assert [o.Name for o in doc.Objects] == names, [o.Name for o in doc.Objects]
+    FreeCAD.closeDocument(doc.Name)
+
+
+fcharness.run(globals())
