@@ -1,0 +1,36 @@
+"""Renders each demo document to a PNG with the real FreeCAD GUI (run under Xvfb by demo.sh):
+the model in grey, the Fill in orange with its edges, isometric view."""
+import glob
+import os
+
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore
+
+OUT = os.environ["HOLEFILL_DEMO_OUT"]
+
+
+def render():
+    try:
+        for path in sorted(glob.glob(os.path.join(OUT, "*.FCStd"))):
+            doc = FreeCAD.openDocument(path)
+            FreeCADGui.activateWorkbench("HoleFillWorkbench")
+            for o in doc.Objects:
+                vo = o.ViewObject
+                vo.Visibility = True
+                if o.Name.startswith("Fill"):
+                    vo.ShapeColor = (0.95, 0.55, 0.15)
+                    vo.LineWidth = 2.0
+                else:
+                    vo.ShapeColor = (0.72, 0.76, 0.82)
+            view = FreeCADGui.ActiveDocument.ActiveView
+            view.viewIsometric()
+            view.fitAll()
+            FreeCADGui.updateGui()
+            view.saveImage(path[:-6] + ".png", 1024, 768, "White")
+            FreeCAD.closeDocument(doc.Name)
+    finally:
+        os._exit(0)
+
+
+QtCore.QTimer.singleShot(0, render)

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The whole test suite on a fresh Debian 12 machine: install what is missing, build,
+# then run everything through ctest: GoogleTest (core), CLI, headless FreeCAD and GUI tests.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+./scripts/setup.sh
+./scripts/build.sh
+build=${HOLEFILL_BUILD_DIR:-$root/build}
+cd "$build"
+ctest --output-on-failure --timeout 900 "$@"
