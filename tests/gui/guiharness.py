@@ -1,0 +1,57 @@
+"""Harness for scripts run inside the FreeCAD GUI (`freecad test.py` imports them as modules):
+run(fn) schedules fn in the Qt event loop, pump(ms) lets the GUI work, finish(ok, **info)
+writes $HF_RESULT and leaves with os._exit (FreeCAD's teardown after sys.exit is unreliable)."""
+import json
+import os
+import sys
+import time
+import traceback
+
+T0 = time.time()
+
+
+def log(msg):
+    print("[guitest %.1fs] %s" % (time.time() - T0, msg))
+    sys.stdout.flush()
+
+
+def pump(ms=200):
+    from PySide2 import QtCore, QtWidgets
+    app = QtWidgets.QApplication.instance()
+    end = time.time() + ms / 1000.0
+    while time.time() < end:
+        app.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        time.sleep(0.01)
+
+
+def shot(name):
+    return os.path.join(os.environ.get("HOLEFILL_SHOTS", "/tmp"), name)
+
+
+def finish(ok, **info):
+    info["ok"] = bool(ok)
+    log("RESULT %s %s" % ("PASS" if ok else "FAIL", json.dumps(info, default=str)[:1500]))
+    path = os.environ.get("HF_RESULT")
+    if path:
+        with open(path, "w") as f:
+            json.dump(info, f, default=str)
+    try:
+        import FreeCAD
+        for d in list(FreeCAD.listDocuments()):
+            FreeCAD.closeDocument(d)
+    except Exception:
+        pass
+    sys.stdout.flush()
+    os._exit(0 if ok else 2)
+
+
+def run(fn, delay_ms=0):
+    from PySide2 import QtCore
+
+    def wrapper():
+        try:
+            fn()
+        except Exception:
+            finish(False, error=traceback.format_exc())
+
+    QtCore.QTimer.singleShot(delay_ms, wrapper)

@@ -1,0 +1,87 @@
+"""GUI test: activate HoleFill, click one edge of a hole with the real mouse (xdotool),
+run "Fill hole", press OK in the task panel, and check the Fill object; screenshots saved."""
+import os
+import subprocess
+
+import FreeCAD
+import FreeCADGui
+import Part
+from PySide2 import QtCore, QtWidgets
+
+import guiharness as h
+
+
+def visible_hole_edge(view, obj, edge_names):
+    vp = view.graphicsView().viewport()
+    for name in edge_names:
+        e = obj.Shape.getElement(name)
+        mid = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+        sx, sy = view.getPointOnScreen(mid)
+        info = view.getObjectInfo((sx, sy))
+        if info and info.get("Component") == name:
+            g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
+            return name, g.x(), g.y()
+    return None, 0, 0
+
+
+def body():
+    import HoleFill
+    FreeCADGui.activateWorkbench("HoleFillWorkbench")
+    h.pump(300)
+    assert FreeCADGui.activeWorkbench().name() == "HoleFillWorkbench"
+    doc = FreeCAD.newDocument("GuiFill")
+    src = doc.addObject("Part::Feature", "Panel")
+    shape = Part.Shape()
+    shape.read(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples", "panel_6_sided.brep"))
+    src.Shape = shape
+    doc.recompute()
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.viewTop()
+    view.fitAll()
+    h.pump(500)
+    hole = HoleFill.findHoles(src.Shape)[0]
+    name, x, y = visible_hole_edge(view, src, hole.edges)
+    assert name, "no hole edge visible at its midpoint"
+    h.log("clicking %s at %d,%d" % (name, x, y))
+    FreeCADGui.Selection.clearSelection()
+    subprocess.run(["xdotool", "mousemove", str(x), str(y)], check=True)
+    h.pump(300)
+    subprocess.run(["xdotool", "click", "1"], check=True)
+    h.pump(500)
+    sel = FreeCADGui.Selection.getSelectionEx()
+    picked = [n for s in sel for n in s.SubElementNames]
+    assert picked == [name], "selection after the click: %s" % picked
+    view.saveImage(h.shot("gui_fill_1_selected.png"), 1024, 768, "White")
+
+    FreeCADGui.runCommand("HoleFill_FillHole")
+    h.pump(800)
+    # Press the task panel's OK button, as a user would.
+    mw = FreeCADGui.getMainWindow()
+    oks = [b for box in mw.findChildren(QtWidgets.QDialogButtonBox) if box.isVisible()
+           for b in [box.button(QtWidgets.QDialogButtonBox.Ok)] if b is not None and b.isVisible()]
+    assert oks, "the Fill hole task panel did not open"
+    labels = [w.text() for w in mw.findChildren(QtWidgets.QLabel) if w.isVisible() and "hole" in w.text()]
+    h.log("task panel: %s" % labels)
+    assert any("6-sided hole" in t for t in labels), labels
+    oks[0].click()
+    h.pump(3000)
+    fills = [o for o in doc.Objects if o.Name.startswith("Fill")]
+    assert len(fills) == 1, [o.Name for o in doc.Objects]
+    fill = fills[0]
+    assert fill.isValid() and fill.Shape.isValid(), fill.getStatusString()
+    assert fill.Status == "ok" and fill.G1 <= 1e-3, (fill.Status, fill.G1)
+    assert sorted(fill.Source[1]) == [name]
+    assert src.Shape.isValid() and len(src.Shape.Faces) == 1  # the source is untouched
+    # Undo removes the fill in one step (it was one transaction).
+    view.viewIsometric()
+    view.fitAll()
+    h.pump(500)
+    view.saveImage(h.shot("gui_fill_2_filled.png"), 1024, 768, "White")
+    QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_fill_3_screen.png"))
+    doc.undo()
+    h.pump(300)
+    assert not [o for o in doc.Objects if o.Name.startswith("Fill")], "undo did not remove the fill"
+    h.finish(True, clicked=name, g0=fill.G0, g1=fill.G1)
+
+
+h.run(body, 500)
