@@ -20,6 +20,7 @@ printf 'garbage that is not a shape\n' >"$T/corrupt.brep"
 head -c 300 "$("$H" samples "$T" | grep panel_6_sided)" >"$T/truncated.brep"
 printf 'ISO-10303-21;\nHEADER;\nbroken\n' >"$T/corrupt.step"
 : >"$T/empty.brep"
+echo "not a model" >"$T/x.txt"
 "$H" samples "$T" >/dev/null
 expect_error "missing file" 1 fill "$T/nope.brep" --out "$T/o.brep"
 expect_error "empty file" 1 fill "$T/empty.brep" --out "$T/o.brep"
