@@ -123,7 +123,7 @@ std::vector<gp_Pnt2d> irregularPolygon(int sides, double cx, double cy, double r
 
 }  // namespace
 
-TopoDS_Shape ccExtraordinaryHole(int N, int R, double bend, double h) {
+TopoDS_Shape ccExtraordinaryHole(int N, int R, double bend, double h, double jitter, unsigned seed) {
   HF_CHECK(N >= 3 && N <= 12, "valence must be 3..12");
   HF_CHECK(R >= 3, "at least 3 rings are needed for regular patches around the hole");
   auto vertex = [&](int k, int i, int j) {  // sector k, grid (i, j); (i,-1) and (-1,j) fold into neighbours
@@ -137,7 +137,12 @@ TopoDS_Shape ccExtraordinaryHole(int N, int R, double bend, double h) {
     const double x = h * (i * std::cos(a0) + j * std::cos(a1)), y = h * (i * std::sin(a0) + j * std::sin(a1));
     const double s = h * R;
     const double z = bend * (0.35 * s * (x * x - 0.6 * y * y) / (s * s) + 0.15 * x + 0.08 * s * std::sin(2.0 * y / s));
-    return gp_Pnt(x, y, z);
+    if (jitter <= 0) return gp_Pnt(x, y, z);
+    // Deterministic per-vertex noise (shared vertices of neighbouring sectors get the same value).
+    std::mt19937 rng(seed * 1000003u + static_cast<unsigned>(k * 10007 + i * 101 + j));
+    std::uniform_real_distribution<double> d(-jitter * h, jitter * h);
+    const double dx = d(rng), dy = d(rng), dz = d(rng);
+    return gp_Pnt(x + 0.5 * dx, y + 0.5 * dy, z + dz);
   };
   static const double Mb[4][4] = {{1, 4, 1, 0}, {0, 4, 2, 0}, {0, 2, 4, 0}, {0, 1, 4, 1}};
   std::vector<TopoDS_Face> faces;

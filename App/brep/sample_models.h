@@ -13,8 +13,10 @@
 
 namespace holefill::samples {
 
-// Valence-N vertex, R rings of quads per sector (R >= 3); `bend` scales the height field.
-TopoDS_Shape ccExtraordinaryHole(int valence, int rings = 4, double bend = 1.0, double spacing = 10.0);
+// Valence-N vertex, R rings of quads per sector (R >= 3); `bend` scales the height field;
+// `jitter` > 0 moves every control vertex by up to jitter*spacing (seeded) for irregular cages.
+TopoDS_Shape ccExtraordinaryHole(int valence, int rings = 4, double bend = 1.0, double spacing = 10.0,
+                                 double jitter = 0.0, unsigned seed = 0);
 TopoDS_Shape filletedBoxCorner(double dx = 100, double dy = 80, double dz = 60, double radius = 12);
 // B-spline panel (100 x 100) with an irregular N-sided hole of curved sides; `seed` varies its shape.
 TopoDS_Shape panelWithHole(int sides = 6, unsigned seed = 1);

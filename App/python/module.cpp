@@ -34,7 +34,7 @@ auto guarded(F&& f) -> decltype(f()) {
 
 py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
                const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
-               int maxControlPoints, const std::function<bool(double)>& progress) {
+               int maxControlPoints, const std::function<bool(double)>& progress, bool sew) {
   return guarded([&] {
     const TopoDS_Shape model = shapeFromBrepString(brep);
     HoleFillOptions o;
@@ -45,6 +45,7 @@ py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std
     o.curvatureTolerance = curvatureTolerance;
     if (maxControlPoints > 0) o.solver.maxControlPoints = maxControlPoints;
     o.progress = progress;
+    o.sew = sew;
     const HoleFillResult r = fillHole(model, edges, o);
     const std::string face = r.face.IsNull() ? "" : shapeToBrepString(r.face);
     const std::string shape = r.shape.IsNull() ? "" : shapeToBrepString(r.shape);
@@ -102,7 +103,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
      "Holes of a BREP shape as JSON text.");
   m.def("fillHole", &fill, py::arg("brep"), py::arg("edges"), py::arg("method") = "np", py::arg("continuity") = "G1",
         py::arg("tolerance") = 0.0, py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1,
-        py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(),
+        py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
   m.def("continuityReport", &report, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
         "G0/G1/G2 of a face against the hole of the model holding the given edges, as JSON.");
@@ -110,6 +111,10 @@ PYBIND11_MODULE(HoleFillApp, m) {
     return guarded([&] { return py::bytes(shapeToBrepString(samples::byName(name))); });
   }, py::arg("name"), "BREP text of a built-in sample model.");
   m.def("sampleNames", &samples::names);
+  m.def("ccHole", [](int valence, int rings, double bend, double jitter, unsigned seed) {
+    return guarded([&] { return py::bytes(shapeToBrepString(samples::ccExtraordinaryHole(valence, rings, bend, 10.0, jitter, seed))); });
+  }, py::arg("valence"), py::arg("rings") = 4, py::arg("bend") = 1.0, py::arg("jitter") = 0.0, py::arg("seed") = 0u,
+     "BREP of a Catmull-Clark extraordinary-point hole ring (bicubic patches around a valence-N hole).");
   m.def("backendInfo", &learn::backendInfo);
   m.attr("__version__") = "0.1.0";
 }

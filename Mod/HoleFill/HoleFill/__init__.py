@@ -119,7 +119,7 @@ def fillHole(shape, hole=1, method="np", continuity="G1", tolerance=0.0, angular
     edges = _edgeIndices(shape, hole)
     face, model, rep = HoleFillApp.fillHole(_brep(shape), edges, method, continuity, float(tolerance),
                                            float(angularTolerance), float(curvatureTolerance),
-                                           int(maxControlPoints), progress)
+                                           int(maxControlPoints), progress, bool(sewn))
     report = json.loads(rep)
     if report["status"] in ("failed", "cancelled"):
         where = ", ".join("Edge%d" % e for e in report["faulty_edges"])

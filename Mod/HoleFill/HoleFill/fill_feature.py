@@ -56,10 +56,11 @@ class FillFeature:
         if src is None or not hasattr(src, "Shape"):
             raise HoleFill.HoleFillError("Fill has no source object with a shape")
         edges = [s for s in subs if s.startswith("Edge")] or 1
-        face, model, report = HoleFill.fillHole(src.Shape, edges, method=obj.Method, continuity=obj.Continuity,
-                                                tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
-                                                sewn=True, progress=progressHook)
-        obj.Shape = face if obj.Output == "Face" else model
+        res = HoleFill.fillHole(src.Shape, edges, method=obj.Method, continuity=obj.Continuity,
+                                tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
+                                sewn=obj.Output == "Sewn", progress=progressHook)
+        obj.Shape = res[1] if obj.Output == "Sewn" else res[0]
+        report = res[-1]
         obj.Status = report["status"]
         obj.Achieved = report["achieved"]
         obj.G0, obj.G1, obj.G2 = report["g0"], report["g1"], report["g2"]

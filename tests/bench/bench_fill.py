@@ -1,0 +1,189 @@
+"""Benchmark: N-sided B-rep hole filling, HoleFill (NP, MVC) against FreeCAD's Surface Filling
+(OCCT GeomPlate, neighbouring faces as G1 supports), side by side in one run on the same holes.
+
+Families
+  cc   Catmull-Clark extraordinary-point holes, valence 3..8, bicubic patches around them
+       (4 shapes per valence: two bends, regular and jittered cages).
+  cad  Faces removed from the OCCT sample models of Debian's occt-misc package: B-spline
+       blends and free-form faces, tori, spheres and small-radius cylinders (fillets).
+Every fill is measured by the same function (HoleFill.continuityReport) as DESIGN.md defines:
+G0/scale, G1 (rad), G2 (relative), >= 50 samples per edge.
+Run by scripts/bench.sh inside freecadcmd; writes $BENCH_OUT/bench_fill.json and .md."""
+import json
+import os
+import platform
+import statistics
+import sys
+import time
+
+import FreeCAD
+import Part
+
+import HoleFill
+import HoleFillApp
+
+OUT = os.environ.get("BENCH_OUT", "/tmp")
+OCC = "/usr/share/opencascade/data"
+CAD_MODELS = ["occ/Bottom.brep", "occ/Top.brep", "occ/bottle.brep", "occ/CrankArm.brep", "step/linkrods.step",
+              "occ/Ball.brep", "occ/Motor-c.brep", "occ/MODERN_Sink_1.brep", "occ/MODERN_Chair_1.brep",
+              "occ/Pump_TopCover.brep", "occ/shell1.brep", "occ/Axis_of_bearing.brep"]
+PER_MODEL = int(os.environ.get("BENCH_PER_MODEL", "3"))
+CAD_TARGET = int(os.environ.get("BENCH_CAD_HOLES", "24"))
+
+
+def cc_holes():
+    holes = []
+    for n in range(3, 9):
+        for bend, jitter, seed in ((1.0, 0.0, 0), (2.0, 0.0, 0), (1.0, 0.15, n), (1.5, 0.25, 10 + n)):
+            s = Part.Shape()
+            s.importBrepFromString(HoleFillApp.ccHole(n, 4, bend, jitter, seed).decode())
+            holes.append(("cc_v%d_b%.1f_j%.2f" % (n, bend, jitter), s))
+    return holes
+
+
+def is_candidate(face, diag):
+    t = face.Surface.__class__.__name__
+    if t in ("BSplineSurface", "BezierSurface", "Toroid", "Sphere", "SurfaceOfRevolution"):
+        return True
+    return t == "Cylinder" and face.Surface.Radius < 0.08 * diag  # a fillet, not a bore
+
+
+def cad_holes():
+    holes = []
+    for rel in CAD_MODELS:
+        path = os.path.join(OCC, rel)
+        if not os.path.exists(path):
+            continue
+        model = Part.Shape()
+        model.read(path)
+        parts = model.Solids or model.Shells or [model]
+        taken = 0
+        for pi, part in enumerate(parts):
+            faces = part.Faces
+            diag = part.BoundBox.DiagonalLength
+            cands = [i for i, f in enumerate(faces) if is_candidate(f, diag) and len(f.Wires) == 1]
+            # Spread the picks over the part instead of taking neighbours.
+            step = max(1, len(cands) // max(1, PER_MODEL))
+            for i in cands[::step]:
+                if taken >= PER_MODEL or len(holes) >= CAD_TARGET:
+                    break
+                rest = [f for j, f in enumerate(faces) if j != i]
+                try:
+                    shell = Part.Shell(rest)
+                    found = HoleFill.findHoles(shell)
+                except Exception:
+                    continue
+                if len(found) != 1 or not 3 <= found[0].corners <= 8 or len(found[0].edges) > 16:
+                    continue
+                holes.append(("%s_p%d_f%d_%s" % (os.path.basename(rel).split(".")[0], pi, i + 1,
+                                                 faces[i].Surface.__class__.__name__), shell))
+                taken += 1
+            if taken >= PER_MODEL:
+                break
+    return holes
+
+
+def run_ours(shape, hole, method):
+    t = time.time()
+    try:
+        face, rep = HoleFill.fillHole(shape, hole, method=method, continuity="G1")
+        dt = time.time() - t
+        return {"ok": rep["face_valid"], "time": dt, "g0r": rep["g0_relative"], "g1": rep["g1"], "g2": rep["g2"],
+                "status": rep["status"]}
+    except HoleFill.HoleFillError as e:
+        return {"ok": False, "time": time.time() - t, "error": str(e)[:200]}
+
+
+def run_geomplate(doc, shape, hole):
+    src = doc.addObject("Part::Feature", "Model")
+    src.Shape = shape
+    doc.recompute()
+    f = doc.addObject("Surface::Filling", "Filling")
+    f.BoundaryEdges = [(src, e) for e in hole["edges"]]
+    f.BoundaryFaces = ["Face%d" % i for i in hole["supportFaces"]]
+    f.BoundaryOrder = [1] * len(hole["edges"])
+    t = time.time()
+    doc.recompute()
+    dt = time.time() - t
+    try:
+        if not f.isValid() or f.Shape.isNull() or len(f.Shape.Faces) != 1 or not f.Shape.Faces[0].isValid():
+            return {"ok": False, "time": dt, "error": f.getStatusString()}
+        rep = HoleFill.continuityReport(f.Shape.Faces[0], shape, hole)
+        return {"ok": True, "time": dt, "g0r": rep["g0_relative"], "g1": rep["g1"], "g2": rep["g2"]}
+    except Exception as e:
+        return {"ok": False, "time": dt, "error": str(e)[:200]}
+    finally:
+        for o in list(doc.Objects):
+            doc.removeObject(o.Name)
+
+
+TIERS = [("G0 1e-6", lambda r: r["g0r"] <= 1e-6), ("G0 1e-4", lambda r: r["g0r"] <= 1e-4),
+         ("G1 1e-3", lambda r: r["g1"] <= 1e-3), ("G1 1e-2", lambda r: r["g1"] <= 1e-2),
+         ("G2 0.1", lambda r: r["g2"] <= 0.1),
+         ("G0+G1 strict", lambda r: r["g0r"] <= 1e-6 and r["g1"] <= 1e-3)]
+
+
+def summarize(results):
+    rows = []
+    for fam in ("cc", "cad"):
+        for meth in ("np", "mvc", "geomplate"):
+            rs = [r[meth] for r in results if r["family"] == fam]
+            if not rs:
+                continue
+            n = len(rs)
+            row = {"family": fam, "method": meth, "holes": n, "failures": sum(1 for r in rs if not r["ok"])}
+            for name, pred in TIERS:
+                row[name] = sum(1 for r in rs if r["ok"] and pred(r)) / n
+            ts = [r["time"] for r in rs]
+            row["median_s"] = statistics.median(ts)
+            row["max_s"] = max(ts)
+            rows.append(row)
+    return rows
+
+
+def table(rows):
+    cols = ["family", "method", "holes", "failures"] + [t for t, _ in TIERS] + ["median_s", "max_s"]
+    out = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+    for r in rows:
+        cells = []
+        for c in cols:
+            v = r[c]
+            if c in dict(TIERS):
+                cells.append("%.0f%%" % (100 * v))
+            elif isinstance(v, float):
+                cells.append("%.3f" % v)
+            else:
+                cells.append(str(v))
+        out.append("| " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
+def main():
+    holes = [("cc", n, s) for n, s in cc_holes()] + [("cad", n, s) for n, s in cad_holes()]
+    doc = FreeCAD.newDocument("Bench")
+    results = []
+    for fam, name, shape in holes:
+        hole = HoleFill.findHoles(shape)[0]
+        r = {"family": fam, "name": name, "N": hole.corners, "edges": len(hole.edges)}
+        r["np"] = run_ours(shape, hole, "np")
+        r["mvc"] = run_ours(shape, hole, "mvc")
+        r["geomplate"] = run_geomplate(doc, shape, hole)
+        results.append(r)
+
+        def fmt(x):
+            return ("%.1e/%.1e %.2fs" % (x["g0r"], x["g1"], x["time"])) if x["ok"] else "FAIL %.2fs" % x["time"]
+        print("%-36s N=%d  np %-22s mvc %-22s plate %s" % (name, r["N"], fmt(r["np"]), fmt(r["mvc"]),
+                                                            fmt(r["geomplate"])))
+        sys.stdout.flush()
+    rows = summarize(results)
+    md = table(rows)
+    print()
+    print(md)
+    with open(os.path.join(OUT, "bench_fill.json"), "w") as f:
+        json.dump({"results": results, "summary": rows, "python": platform.python_version()}, f, indent=1)
+    with open(os.path.join(OUT, "bench_fill.md"), "w") as f:
+        f.write(md + "\n")
+
+
+main()
+os._exit(0)
