@@ -37,14 +37,18 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
     if (BRep_Tool::Degenerated(E)) continue;
     BRepAdaptor_Curve2d pc(E, face);
     const double a = pc.FirstParameter(), b = pc.LastParameter();
+    // A face that shares the hole's edge (our fills do) is compared at the same curve parameter.
+    int shared = -1;
+    for (size_t k = 0; k < hole.edges.size(); ++k)
+      if (hole.edges[k].edge.IsSame(E)) shared = static_cast<int>(k);
     for (int i = 0; i <= opt.samplesPerEdge; ++i) {
       const double t = a + (b - a) * i / opt.samplesPerEdge;
       const gp_Pnt2d uv = pc.Value(t);
       const SurfaceJet jf = faceJet(fs, frev, uv.X(), uv.Y());
       // Nearest point of the hole boundary.
-      int best = -1;
-      double bestD = 1e300, bestT = 0;
-      for (size_t k = 0; k < curves.size(); ++k) {
+      int best = shared;
+      double bestD = shared >= 0 ? curves[shared].Value(t).SquareDistance(toPnt(jf.p)) : 1e300, bestT = t;
+      for (size_t k = 0; k < curves.size() && shared < 0; ++k) {
         Extrema_ExtPC ext(toPnt(jf.p), curves[k]);
         if (ext.IsDone())
           for (int m = 1; m <= ext.NbExt(); ++m)

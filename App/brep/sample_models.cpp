@@ -138,8 +138,12 @@ TopoDS_Shape ccExtraordinaryHole(int N, int R, double bend, double h, double jit
     const double s = h * R;
     const double z = bend * (0.35 * s * (x * x - 0.6 * y * y) / (s * s) + 0.15 * x + 0.08 * s * std::sin(2.0 * y / s));
     if (jitter <= 0) return gp_Pnt(x, y, z);
-    // Deterministic per-vertex noise (shared vertices of neighbouring sectors get the same value).
-    std::mt19937 rng(seed * 1000003u + static_cast<unsigned>(k * 10007 + i * 101 + j));
+    // Deterministic per-vertex noise keyed by a canonical name of the vertex: (0, j) of sector k
+    // is (j, 0) of sector k+1, and the EP belongs to no sector.
+    int ck = k, ci = i, cj = j;
+    if (i == 0 && j == 0) ck = 0;
+    else if (i == 0) { ck = (k + 1) % N; ci = j; cj = 0; }
+    std::mt19937 rng(seed * 1000003u + static_cast<unsigned>(ck * 10007 + ci * 101 + cj));
     std::uniform_real_distribution<double> d(-jitter * h, jitter * h);
     const double dx = d(rng), dy = d(rng), dz = d(rng);
     return gp_Pnt(x + 0.5 * dx, y + 0.5 * dy, z + dz);

@@ -2,9 +2,11 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <set>
 
 #include "geometry/bspline_basis.h"
@@ -69,28 +71,52 @@ int poleIndex(int nv, int su, int sv, int k) { return (su - P + k / (P + 1)) * n
 
 void assemble(System& sys, const Eigen::SparseMatrix<double>& A) {
   const int n = sys.nu * sys.nv;
+  // Rows of one knot span touch the same 16 poles: sum them into one dense 48x48 block per
+  // span first, so the sparse matrix sees one triplet per block entry, not per row.
+  using Block = Eigen::Matrix<double, 3 * M, 3 * M>;
+  std::map<std::pair<int, int>, Block> blocks;
+  for (const Row& r : sys.rows) {
+    auto it = blocks.find({r.su, r.sv});
+    if (it == blocks.end()) it = blocks.emplace(std::make_pair(r.su, r.sv), Block::Zero()).first;
+    Block& B = it->second;
+    const Eigen::Matrix<double, M, M> C = r.weight * r.coef * r.coef.transpose();
+    int axis = -1;  // G0 rows act on one coordinate: only that diagonal of each 3x3 block
+    for (int d = 0; d < 3; ++d)
+      if (r.dir(d) == 1.0 && r.dir((d + 1) % 3) == 0.0 && r.dir((d + 2) % 3) == 0.0) axis = d;
+    if (axis >= 0) {
+      for (int a = 0; a < M; ++a)
+        for (int b = 0; b < M; ++b) B(3 * a + axis, 3 * b + axis) += C(a, b);
+    } else {
+      const Eigen::Matrix3d D = r.dir * r.dir.transpose();
+      for (int a = 0; a < M; ++a)
+        for (int b = 0; b < M; ++b) B.block<3, 3>(3 * a, 3 * b) += C(a, b) * D;
+    }
+  }
   std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(A.nonZeros() * 3 + sys.rows.size() * M * M * 3);
+  trip.reserve(A.nonZeros() * 3 + blocks.size() * 9 * M * M);
   for (int k = 0; k < A.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
       for (int c = 0; c < 3; ++c) trip.emplace_back(3 * it.row() + c, 3 * it.col() + c, it.value());
-  for (const Row& r : sys.rows) {
-    const Eigen::Matrix3d ww = r.weight * r.dir * r.dir.transpose();
+  for (const auto& [span, B] : blocks)
     for (int a = 0; a < M; ++a) {
-      const int ia = poleIndex(sys.nv, r.su, r.sv, a);
+      const int ia = poleIndex(sys.nv, span.first, span.second, a);
       for (int b = 0; b < M; ++b) {
-        const int ib = poleIndex(sys.nv, r.su, r.sv, b);
-        const double cc = r.coef(a) * r.coef(b);
-        if (cc == 0.0) continue;
+        const int ib = poleIndex(sys.nv, span.first, span.second, b);
         for (int c = 0; c < 3; ++c)
-          for (int d = 0; d < 3; ++d)
-            if (ww(c, d) != 0.0) trip.emplace_back(3 * ia + c, 3 * ib + d, cc * ww(c, d));
+          for (int d = 0; d < 3; ++d) {
+            const double v = B(3 * a + c, 3 * b + d);
+            if (v != 0.0) trip.emplace_back(3 * ia + c, 3 * ib + d, v);
+          }
       }
     }
-  }
   sys.H.resize(3 * n, 3 * n);
   sys.H.setFromTriplets(trip.begin(), trip.end());
+  const auto t0 = std::chrono::steady_clock::now();
   sys.ldlt.compute(sys.H);
+  if (std::getenv("HOLEFILL_DEBUG"))
+    std::fprintf(stderr, "  factor %.4fs (%d unknowns, %ld nonzeros, %zu blocks)\n",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 3 * n,
+                 static_cast<long>(sys.H.nonZeros()), blocks.size());
   if (sys.ldlt.info() != Eigen::Success)
     throw Error("the fill's normal equations are singular: the boundary constraints do not determine the surface");
 }
@@ -127,18 +153,37 @@ struct Errors {
   std::vector<int> violating;
 };
 
-Errors measure(const BSplineSurface& s, const FillConstraints& c, const VariationalFillOptions& o) {
+// Jet of the solution x at a sample, from its precomputed local basis (no basis re-evaluation).
+SurfaceJet jetAt(const LocalBasis& b, const Eigen::VectorXd& x, int nv, bool second) {
+  SurfaceJet j{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+               Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  for (int a = 0; a < M; ++a) {
+    const Eigen::Vector3d P = x.segment<3>(3 * poleIndex(nv, b.su, b.sv, a));
+    j.p += b.n(a) * P;
+    j.su += b.nu(a) * P;
+    j.sv += b.nv(a) * P;
+    if (second) {
+      j.suu += b.nuu(a) * P;
+      j.suv += b.nuv(a) * P;
+      j.svv += b.nvv(a) * P;
+    }
+  }
+  return j;
+}
+
+Errors measure(const std::vector<LocalBasis>& basis, const Eigen::VectorXd& x, int nv, const FillConstraints& c,
+               const VariationalFillOptions& o) {
   Errors e;
+  const bool second = o.continuity == Continuity::G2;
   for (size_t k = 0; k < c.size(); ++k) {
-    const auto d = s.derivatives(c.uv[k].x(), c.uv[k].y(), o.continuity == Continuity::G2 ? 2 : 1);
-    const double e0 = (d[0][0] - c.point[k]).norm();
+    const SurfaceJet j = jetAt(basis[k], x, nv, second);
+    const double e0 = (j.p - c.point[k]).norm();
     double e1 = 0.0, e2 = 0.0;
-    SurfaceJet j{d[0][0], d[1][0], d[0][1], d[2][0], d[1][1], d[0][2]};
     Eigen::Vector3d n;
     const bool ok = unitNormal(j, n);
     if (c.normalValid[k] && o.continuity >= Continuity::G1)
       e1 = ok ? std::acos(std::min(1.0, std::abs(n.dot(c.normal[k])))) : M_PI / 2;
-    if (c.normalValid[k] && o.continuity == Continuity::G2 && ok) {
+    if (c.normalValid[k] && second && ok) {
       const double kf = normalCurvature(j, n.dot(c.normal[k]) < 0 ? Eigen::Vector3d(-n) : n, c.across[k]);
       e2 = std::abs(kf - c.curvature[k]) / std::max(std::abs(c.curvature[k]), 1.0);
     }
@@ -179,11 +224,6 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
   for (double w : c.weight) W += w;
   HF_CHECK(W > 0, "boundary samples carry no length");
 
-  if (std::getenv("HOLEFILL_DEBUG2"))
-    for (size_t k = 0; k + 1 < c.size(); ++k)
-      if ((c.point[k] - c.point[k + 1]).norm() < 1e-12)
-        std::fprintf(stderr, "corner %zu: normal angle %.3g rad, uv gap %.3g\n", k,
-                     std::acos(std::min(1.0, c.normal[k].dot(c.normal[k + 1]))), (c.uv[k] - c.uv[k + 1]).norm());
   VariationalFillResult res;
   Errors bestErr;
   bool haveBest = false;
@@ -231,8 +271,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
         // Linearize the cross-boundary normal curvature about the current surface.
         for (size_t k = 0; k < c.size(); ++k) {
           if (!c.normalValid[k]) continue;
-          const auto d = surf.derivatives(c.uv[k].x(), c.uv[k].y(), 1);
-          SurfaceJet j{d[0][0], d[1][0], d[0][1], {}, {}, {}};
+          const SurfaceJet j = jetAt(basis[k], x, sys.nv, false);
           const Eigen::Vector2d ab = parameterDirection(j, c.across[k]);
           const double len2 = (ab(0) * j.su + ab(1) * j.sv).squaredNorm();
           const LocalBasis& b = basis[k];
@@ -241,34 +280,37 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
                               rowWeight(o.curvatureWeight, coef, k), true, int(k)});
         }
       }
+      const auto ta = std::chrono::steady_clock::now();
       assemble(sys, A);
+      const double tAssemble = std::chrono::duration<double>(std::chrono::steady_clock::now() - ta).count();
+      const auto ti = std::chrono::steady_clock::now();
+      int iterations = 0;
       std::vector<double> targets(sys.rows.size());
       for (size_t i = 0; i < sys.rows.size(); ++i) targets[i] = sys.rows[i].target;
       Errors levelBest;
       Eigen::VectorXd levelX;
-      for (int it = 0; it <= o.multiplierIterations; ++it) {
+      std::vector<double> history;
+      for (int it = 0; it <= o.multiplierIterations; ++it, ++iterations) {
         x = sys.ldlt.solve(rhs(sys, targets));
-        surf = toSurface(U, V, x);
-        const Errors e = measure(surf, c, o);
+        const Errors e = measure(basis, x, sys.nv, c, o);
         if (it == 0 || better(e, levelBest, o)) { levelBest = e; levelX = x; }
-        if (std::getenv("HOLEFILL_DEBUG")) std::fprintf(stderr, "   it %d g0 %.3g g1 %.3g\n", it, e.g0, e.g1);
         // Keep iterating past the tolerance: the multiplier rounds are cheap and the margin
         // is what the interior (set only through the boundary) inherits.
-        if (e.violating.empty() && worstRatio(e, o) < o.multiplierMargin) break;
+        const double ratio = worstRatio(e, o);
+        if (e.violating.empty() && ratio < o.multiplierMargin) break;
+        // Stalled: more rounds will not pay. Above the tolerance the knots, not the multipliers,
+        // are what is missing; below it the remaining error is the discretization's.
+        history.push_back(ratio);
+        if (history.size() > 4 && ratio > 0.8 * history[history.size() - 5]) break;
         for (size_t i = 0; i < sys.rows.size(); ++i)
           if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
       }
       x = levelX;
       surf = toSurface(U, V, x);
       if (std::getenv("HOLEFILL_DEBUG"))
-        std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu\n", level, sys.nu,
-                     sys.nv, cr, levelBest.g0, levelBest.g1, levelBest.g2, levelBest.violating.size());
-      if (std::getenv("HOLEFILL_DEBUG2"))
-        for (int k : levelBest.violating) {
-          const auto d = surf.derivatives(c.uv[k].x(), c.uv[k].y(), 1);
-          std::fprintf(stderr, "   viol %d uv %.4f %.4f e0 %.3g n.su %.3g n.sv %.3g\n", k, c.uv[k].x(), c.uv[k].y(),
-                       (d[0][0] - c.point[k]).norm(), d[1][0].dot(c.normal[k]), d[0][1].dot(c.normal[k]));
-        }
+        std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu; assemble %.3fs, %d rounds %.3fs\n",
+                     level, sys.nu, sys.nv, cr, levelBest.g0, levelBest.g1, levelBest.g2, levelBest.violating.size(), tAssemble,
+                     iterations, std::chrono::duration<double>(std::chrono::steady_clock::now() - ti).count());
       if (!haveBest || better(levelBest, bestErr, o) || levelBest.violating.empty()) {
         bestErr = levelBest;
         res.surface = surf;

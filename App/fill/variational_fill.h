@@ -58,7 +58,7 @@ struct VariationalFillOptions {
   double normalWeight = 1e4;     // G1 rows
   double curvatureWeight = 1e3;  // G2 rows
   double referenceWeight = 1e-1; // soft pull to interior reference points (MVC), no multiplier
-  int initialSpans = 6;          // spans along the longer domain side before refinement
+  int initialSpans = 10;          // spans along the longer domain side before refinement
   int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
   int maxRefinements = 7;        // knot-insertion rounds
   int multiplierIterations = 40; // augmented-Lagrangian rounds per solve

@@ -60,6 +60,8 @@ def cad_holes():
         taken = 0
         for pi, part in enumerate(parts):
             faces = part.Faces
+            if part.isNull() or not part.Faces:
+                continue
             diag = part.BoundBox.DiagonalLength
             cands = [i for i, f in enumerate(faces) if is_candidate(f, diag) and len(f.Wires) == 1]
             # Spread the picks over the part instead of taking neighbours.
