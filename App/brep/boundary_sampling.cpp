@@ -5,6 +5,7 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/error.h"
@@ -19,8 +20,26 @@ SurfaceJet supportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t
   return faceJet(s, face.Orientation() == TopAbs_REVERSED, uv.X(), uv.Y());
 }
 
+bool regularSupportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, SurfaceJet& jet, Eigen::Vector3d& n) {
+  BRepAdaptor_Curve2d pc(edge, face);
+  BRepAdaptor_Surface s(face, Standard_False);
+  const bool rev = face.Orientation() == TopAbs_REVERSED;
+  const double a = pc.FirstParameter(), b = pc.LastParameter();
+  for (double step : {0.0, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3}) {
+    for (double sign : {1.0, -1.0}) {
+      const double tt = std::clamp(t + sign * step * (b - a), a, b);
+      const gp_Pnt2d uv = pc.Value(tt);
+      jet = faceJet(s, rev, uv.X(), uv.Y());
+      if (unitNormal(jet, n)) return true;
+      if (step == 0.0) break;
+    }
+  }
+  return false;
+}
+
 bool supportNormal(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, Eigen::Vector3d& n) {
-  return unitNormal(supportJet(edge, face, t), n);
+  SurfaceJet j;
+  return regularSupportJet(edge, face, t, j, n);
 }
 
 namespace {
@@ -83,8 +102,8 @@ std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySampl
       }
       s.tangent = tan.normalized() * (reversed ? -1.0 : 1.0);
       s.weight = len / n * ((i == 0 || i + 1 == ts.size()) ? 0.5 : 1.0);
-      const SurfaceJet j = supportJet(he.edge, he.support, s.t);
-      s.normalValid = unitNormal(j, s.normal);
+      SurfaceJet j;
+      s.normalValid = regularSupportJet(he.edge, he.support, s.t, j, s.normal);
       if (s.normalValid) {
         // The hole interior is to the left of the traversal about the support normal.
         s.across = s.normal.cross(s.tangent).normalized();

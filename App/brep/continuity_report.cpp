@@ -8,6 +8,8 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "brep/boundary_sampling.h"
 #include "geometry/error.h"
@@ -63,8 +65,8 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
       const double g0 = std::sqrt(bestD);
       double g1 = 0, g2 = 0;
       Eigen::Vector3d nf, nb;
-      const SurfaceJet jb = supportJet(he.edge, he.support, bestT);
-      if (unitNormal(jb, nb) && unitNormal(jf, nf)) {
+      SurfaceJet jb;
+      if (regularSupportJet(he.edge, he.support, bestT, jb, nb) && unitNormal(jf, nf)) {
         g1 = std::acos(std::min(1.0, std::abs(nf.dot(nb))));
         gp_Pnt p;
         gp_Vec d1;

@@ -133,10 +133,10 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
     VariationalFillOptions so = opt.solver;
     so.continuity = opt.continuity;
-    // The solver meets tighter targets at its samples than the report checks between them.
-    so.g0Tolerance = std::min(so.g0Tolerance, 0.5 * r.g0Tolerance / scale);
-    so.g1Tolerance = std::min(so.g1Tolerance, 0.5 * opt.angularTolerance);
-    so.g2Tolerance = std::min(so.g2Tolerance, 0.5 * opt.curvatureTolerance);
+    // The solver meets slightly tighter targets at its samples than the report checks between them.
+    so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
+    so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
+    so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
     so.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
     const VariationalFillResult vf = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, so);
     for (const auto& w : vf.warnings) r.warnings.push_back(w);

@@ -26,7 +26,7 @@ ParamMethod paramMethodFromString(const std::string& name);  // "np" | "mvc" | "
 std::string toString(ParamMethod m);
 
 struct ParameterizationOptions {
-  double margin = 0.1;           // domain = pcurve bounding box grown by this fraction of its size per side
+  double margin = 0.03;           // domain = pcurve bounding box grown by this fraction of its size per side
   int minCorners = 3;            // loops with fewer corners get 4 virtual corners at equal arc length (MVC)
   int interiorReferenceGrid = 12; // MVC interior reference points on a grid of this many cells per side
 };

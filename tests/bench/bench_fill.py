@@ -6,6 +6,11 @@ Families
        (4 shapes per valence: two bends, regular and jittered cages).
   cad  Faces removed from the OCCT sample models of Debian's occt-misc package: B-spline
        blends and free-form faces, tori, spheres and small-radius cylinders (fillets).
+       Only faces that were themselves G1 with all their neighbours (measured with the same
+       report, G1 <= 1e-3 rad) are taken: the removed face is a witness that a G1 fill exists.
+       A face meeting a neighbour at a sharp edge asks for the impossible at that edge.
+np_loose is NP asked only for the tolerances GeomPlate works to (G0 1e-4 x scale, G1 1e-2 rad):
+its time is the time at equal requested quality.
 Every fill is measured by the same function (HoleFill.continuityReport) as DESIGN.md defines:
 G0/scale, G1 (rad), G2 (relative), >= 50 samples per edge.
 Run by scripts/bench.sh inside freecadcmd; writes $BENCH_OUT/bench_fill.json and .md."""
@@ -26,7 +31,9 @@ OUT = os.environ.get("BENCH_OUT", "/tmp")
 OCC = "/usr/share/opencascade/data"
 CAD_MODELS = ["occ/Bottom.brep", "occ/Top.brep", "occ/bottle.brep", "occ/CrankArm.brep", "step/linkrods.step",
               "occ/Ball.brep", "occ/Motor-c.brep", "occ/MODERN_Sink_1.brep", "occ/MODERN_Chair_1.brep",
-              "occ/Pump_TopCover.brep", "occ/shell1.brep", "occ/Axis_of_bearing.brep"]
+              "occ/Pump_TopCover.brep", "occ/shell1.brep", "occ/Axis_of_bearing.brep", "occ/hammer.brep",
+              "occ/MODERN_Refrigerator_1_opened.brep", "occ/MODERN_Cooker_1.brep", "occ/Pump_Nut.brep",
+              "step/screw.step", "occ/wing.brep"]
 PER_MODEL = int(os.environ.get("BENCH_PER_MODEL", "3"))
 CAD_TARGET = int(os.environ.get("BENCH_CAD_HOLES", "24"))
 
@@ -65,7 +72,7 @@ def cad_holes():
             diag = part.BoundBox.DiagonalLength
             cands = [i for i, f in enumerate(faces) if is_candidate(f, diag) and len(f.Wires) == 1]
             # Spread the picks over the part instead of taking neighbours.
-            step = max(1, len(cands) // max(1, PER_MODEL))
+            step = max(1, len(cands) // max(1, 4 * PER_MODEL))
             for i in cands[::step]:
                 if taken >= PER_MODEL or len(holes) >= CAD_TARGET:
                     break
@@ -77,6 +84,12 @@ def cad_holes():
                     continue
                 if len(found) != 1 or not 3 <= found[0].corners <= 8 or len(found[0].edges) > 16:
                     continue
+                try:
+                    witness = HoleFill.continuityReport(faces[i], shell, found[0])
+                except Exception:
+                    continue
+                if witness["g1"] > 1e-3:
+                    continue
                 holes.append(("%s_p%d_f%d_%s" % (os.path.basename(rel).split(".")[0], pi, i + 1,
                                                  faces[i].Surface.__class__.__name__), shell))
                 taken += 1
@@ -85,13 +98,15 @@ def cad_holes():
     return holes
 
 
-def run_ours(shape, hole, method):
+def run_ours(shape, hole, method, loose=False):
+    # loose: the tolerances GeomPlate works to (G0 1e-4 x scale, G1 1e-2 rad), for time at equal quality.
     t = time.time()
     try:
-        face, rep = HoleFill.fillHole(shape, hole, method=method, continuity="G1")
+        tol = dict(tolerance=1e-4 * hole["scale"], angularTolerance=1e-2) if loose else {}
+        face, rep = HoleFill.fillHole(shape, hole, method=method, continuity="G1", **tol)
         dt = time.time() - t
-        return {"ok": rep["face_valid"], "time": dt, "g0r": rep["g0_relative"], "g1": rep["g1"], "g2": rep["g2"],
-                "status": rep["status"]}
+        return {"ok": rep["face_valid"], "time": dt, "core": rep["timings"]["total"], "g0r": rep["g0_relative"],
+                "g1": rep["g1"], "g2": rep["g2"], "status": rep["status"]}
     except HoleFill.HoleFillError as e:
         return {"ok": False, "time": time.time() - t, "error": str(e)[:200]}
 
@@ -128,7 +143,7 @@ TIERS = [("G0 1e-6", lambda r: r["g0r"] <= 1e-6), ("G0 1e-4", lambda r: r["g0r"]
 def summarize(results):
     rows = []
     for fam in ("cc", "cad"):
-        for meth in ("np", "mvc", "geomplate"):
+        for meth in ("np", "mvc", "np_loose", "geomplate"):
             rs = [r[meth] for r in results if r["family"] == fam]
             if not rs:
                 continue
@@ -136,15 +151,18 @@ def summarize(results):
             row = {"family": fam, "method": meth, "holes": n, "failures": sum(1 for r in rs if not r["ok"])}
             for name, pred in TIERS:
                 row[name] = sum(1 for r in rs if r["ok"] and pred(r)) / n
-            ts = [r["time"] for r in rs]
+            # Time per hole: the algorithm (our core pipeline; GeomPlate's recompute) and, for ours,
+            # the whole Python call including the BREP transport of the model.
+            ts = [r.get("core", r["time"]) for r in rs]
             row["median_s"] = statistics.median(ts)
             row["max_s"] = max(ts)
+            row["call_median_s"] = statistics.median(r["time"] for r in rs)
             rows.append(row)
     return rows
 
 
 def table(rows):
-    cols = ["family", "method", "holes", "failures"] + [t for t, _ in TIERS] + ["median_s", "max_s"]
+    cols = ["family", "method", "holes", "failures"] + [t for t, _ in TIERS] + ["median_s", "max_s", "call_median_s"]
     out = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
     for r in rows:
         cells = []
@@ -169,6 +187,7 @@ def main():
         r = {"family": fam, "name": name, "N": hole.corners, "edges": len(hole.edges)}
         r["np"] = run_ours(shape, hole, "np")
         r["mvc"] = run_ours(shape, hole, "mvc")
+        r["np_loose"] = run_ours(shape, hole, "np", loose=True)
         r["geomplate"] = run_geomplate(doc, shape, hole)
         results.append(r)
 
