@@ -47,8 +47,9 @@ class FillTaskPanel:
         self.useSel = QtWidgets.QPushButton("Use selected edges")
         lay.addRow(self.useSel)
         self.method = QtWidgets.QComboBox()
-        self.method.addItems(["np", "mvc"])
-        self.method.setToolTip("np: nearest plane projection; mvc: regular N-gon with mean value mapping")
+        self.method.addItems(list(HoleFill.METHODS))
+        self.method.setToolTip("auto: np or mvc, whichever distorts the boundary less;\n"
+                               "np: nearest plane projection; mvc: regular N-gon with mean value mapping")
         lay.addRow("Parameterization:", self.method)
         self.continuity = QtWidgets.QComboBox()
         self.continuity.addItems(["G0", "G1", "G2"])

@@ -32,7 +32,7 @@ const char* kUsage =
     "usage:\n"
     "  holefill holes FILE [--all] [--json]\n"
     "  holefill fill FILE --out OUT [--hole K | --edges Edge3,Edge7,... | --all-holes]\n"
-    "                [--face-out FACE.brep] [--method np|mvc|support] [--continuity G0|G1|G2]\n"
+    "                [--face-out FACE.brep] [--method auto|np|mvc|support] [--continuity G0|G1|G2]\n"
     "                [--tolerance T] [--angular-tolerance RAD] [--json]\n"
     "  holefill samples DIR        write the bundled sample models as .brep\n"
     "  holefill --version\n";
@@ -119,7 +119,7 @@ int cmdFill(const Args& a) {
   if (a.input.empty()) throw Error("fill: no input file");
   if (!a.has("--out")) throw Error("fill: --out OUT is required");
   HoleFillOptions o;
-  o.method = paramMethodFromString(a.get("--method", "np"));
+  o.method = paramMethodFromString(a.get("--method", "auto"));
   o.continuity = continuityFromString(a.get("--continuity", "G1"));
   if (a.has("--tolerance")) o.tolerance = number(a.get("--tolerance"), "--tolerance");
   if (a.has("--angular-tolerance")) o.angularTolerance = number(a.get("--angular-tolerance"), "--angular-tolerance");

@@ -113,6 +113,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     t = Clock::now();
     const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
     for (const auto& w : P.warnings) r.warnings.push_back(w);
+    r.methodName = toString(opt.method) == toString(P.chosen) ? r.methodName : toString(opt.method) + ":" + toString(P.chosen);
     r.timings.parameterize = since(t);
     if (!progress(0.1)) return cancelled();
 

@@ -24,7 +24,7 @@
 namespace holefill {
 
 struct HoleFillOptions {
-  ParamMethod method = ParamMethod::NearestPlane;
+  ParamMethod method = ParamMethod::Auto;      // NP for height-field-like holes, else MVC
   Continuity continuity = Continuity::G1;
   double tolerance = 0.0;           // G0 tolerance, model units; 0 means 1e-6 x hole scale (DESIGN strict tier)
   double angularTolerance = 1e-3;   // G1 tolerance, radians

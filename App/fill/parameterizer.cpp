@@ -16,14 +16,16 @@ namespace holefill {
 ParamMethod paramMethodFromString(const std::string& s) {
   if (s == "np" || s == "NP" || s == "plane") return ParamMethod::NearestPlane;
   if (s == "mvc" || s == "MVC" || s == "polygon") return ParamMethod::MeanValue;
+  if (s == "auto") return ParamMethod::Auto;
   if (s == "support" || s == "exact") return ParamMethod::Support;
-  throw Error("unknown parameterization method '" + s + "': use np, mvc or support");
+  throw Error("unknown parameterization method '" + s + "': use np, mvc, auto or support");
 }
 
 std::string toString(ParamMethod m) {
   switch (m) {
     case ParamMethod::NearestPlane: return "np";
     case ParamMethod::MeanValue: return "mvc";
+    case ParamMethod::Auto: return "auto";
     case ParamMethod::Support: return "support";
   }
   return "?";
@@ -137,15 +139,65 @@ void support(const Hole& hole, const std::vector<BoundarySample>& s, Parameteriz
 
 }  // namespace
 
+double boundaryDistortion(const std::vector<BoundarySample>& s, const std::vector<Eigen::Vector2d>& uv) {
+  std::vector<double> r;
+  for (size_t k = 0; k + 1 < s.size(); ++k) {
+    const double d3 = (s[k + 1].point - s[k].point).norm();
+    if (s[k + 1].edge == s[k].edge && d3 > 0) r.push_back((uv[k + 1] - uv[k]).norm() / d3);
+  }
+  if (r.size() < 4) return 1e300;
+  std::sort(r.begin(), r.end());
+  const double lo = r[r.size() / 20], hi = r[r.size() - 1 - r.size() / 20];
+  return lo > 0 ? hi / lo : 1e300;
+}
+
 Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,
                               const ParameterizationOptions& opt) {
   HF_CHECK(samples.size() >= 6, "a hole boundary needs at least 6 samples");
+  {
+    // A loop whose points lie on a line (a slit, two coincident edges) encloses nothing.
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto& x : samples) c += x.point;
+    c /= static_cast<double>(samples.size());
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (const auto& x : samples) C += (x.point - c) * (x.point - c).transpose();
+    const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvalues();
+    if (!(ev(1) > 1e-12 * ev(2)))
+      throw Error("the hole boundary is degenerate: its points lie on a line, so it encloses no area");
+  }
+  if (method == ParamMethod::Auto) {
+    // NP suits holes whose support normals all stay within 60 degrees of the plane's normal (the
+    // fill is a height field over the plane); steeper boundaries get compressed there, so MVC.
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    double W = 0;
+    for (const auto& x : samples) { c += x.weight * x.point; W += x.weight; }
+    c /= W;
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (const auto& x : samples) C += x.weight * (x.point - c) * (x.point - c).transpose();
+    const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvectors().col(0);
+    double minCos = 1.0;
+    for (const auto& x : samples)
+      if (x.normalValid) minCos = std::min(minCos, std::abs(x.normal.dot(m)));
+    const std::string steep = std::to_string(std::acos(minCos) * 180.0 / M_PI);
+    if (minCos >= opt.autoPlaneCos) {
+      // Over a height field a folded or flat projection means the loop itself is degenerate or
+      // self-intersecting: that error stands, MVC would only hide it.
+      Parameterization np = parameterize(hole, samples, ParamMethod::NearestPlane, opt);
+      np.warnings.push_back("auto: np (support normals within " + steep + " deg of the plane's)");
+      return np;
+    }
+    Parameterization mvc = parameterize(hole, samples, ParamMethod::MeanValue, opt);
+    mvc.warnings.push_back("auto: mvc (support normals up to " + steep + " deg from the plane's)");
+    return mvc;
+  }
   Parameterization P;
+  P.chosen = method;
   bool fixedDomain = false;
   switch (method) {
     case ParamMethod::NearestPlane: nearestPlane(samples, P); break;
     case ParamMethod::MeanValue: meanValue(hole, samples, opt, P); break;
     case ParamMethod::Support: support(hole, samples, P); fixedDomain = P.u0 < P.u1; break;
+    case ParamMethod::Auto: break;  // handled above
   }
   Polygon2 poly(P.uv.begin(), P.uv.end());
   const double area = signedArea(poly);
@@ -170,6 +222,7 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
     box = Eigen::AlignedBox2d();
     for (const auto& q : P.uv) box.extend(q);
   }
+  P.distortion = boundaryDistortion(samples, P.uv);
   if (!fixedDomain) {
     const Eigen::Vector2d ext = box.sizes();
     const double m = opt.margin * std::max(ext.x(), ext.y());

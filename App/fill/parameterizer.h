@@ -5,6 +5,9 @@
 //  - MeanValue (MVC, Floater 2003): the N corners go to a regular N-gon, samples along each
 //    side by chord length; mean value coordinates of interior points of the N-gon
 //    interpolate the boundary and give interior reference points (uv, xyz).
+//  - Auto: NP when every support normal is within acos(autoPlaneCos) of the least-squares
+//    plane's normal (the fill is a height field over the plane; a fold there is an error of the
+//    loop itself), else MVC.
 //  - Support: the hole's own pcurves on its single support face (a hole cut out of one
 //    face); reproduces that face's surface when it is a B-spline, and is the reference for tests.
 // Every result is oriented counter-clockwise (u is mirrored when needed) so the filling
@@ -20,15 +23,16 @@
 
 namespace holefill {
 
-enum class ParamMethod { NearestPlane, MeanValue, Support };
+enum class ParamMethod { NearestPlane, MeanValue, Auto, Support };
 
-ParamMethod paramMethodFromString(const std::string& name);  // "np" | "mvc" | "support"
+ParamMethod paramMethodFromString(const std::string& name);  // "np" | "mvc" | "auto" | "support"
 std::string toString(ParamMethod m);
 
 struct ParameterizationOptions {
   double margin = 0.03;           // domain = pcurve bounding box grown by this fraction of its size per side
   int minCorners = 3;            // loops with fewer corners get 4 virtual corners at equal arc length (MVC)
   int interiorReferenceGrid = 12; // MVC interior reference points on a grid of this many cells per side
+  double autoPlaneCos = 0.5;      // Auto takes NP while all |n . plane normal| >= this (60 degrees)
 };
 
 struct Parameterization {
@@ -39,8 +43,13 @@ struct Parameterization {
   std::vector<Eigen::Vector3d> interiorXYZ;
   std::vector<int> cornerSamples;            // sample indices of the corners used
   bool mirroredU = false;
+  ParamMethod chosen = ParamMethod::NearestPlane;  // the method used (differs from the request for Auto)
+  double distortion = 0.0;                          // see boundaryDistortion()
   std::vector<std::string> warnings;
 };
+
+// Spread of |Δuv| / |Δxyz| over the loop's segments: 95th over 5th percentile (1 = isometric up to scale).
+double boundaryDistortion(const std::vector<BoundarySample>& samples, const std::vector<Eigen::Vector2d>& uv);
 
 // `samples` must be in the coordinates the fill is solved in (normalized); `hole` gives corners and supports.
 Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,

@@ -101,7 +101,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("brep"), py::arg("includeOuter") = false, py::arg("cornerAngleDeg") = 5.0,
      "Holes of a BREP shape as JSON text.");
-  m.def("fillHole", &fill, py::arg("brep"), py::arg("edges"), py::arg("method") = "np", py::arg("continuity") = "G1",
+  m.def("fillHole", &fill, py::arg("brep"), py::arg("edges"), py::arg("method") = "auto", py::arg("continuity") = "G1",
         py::arg("tolerance") = 0.0, py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1,
         py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");

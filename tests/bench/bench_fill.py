@@ -9,6 +9,7 @@ Families
        Only faces that were themselves G1 with all their neighbours (measured with the same
        report, G1 <= 1e-3 rad) are taken: the removed face is a witness that a G1 fill exists.
        A face meeting a neighbour at a sharp edge asks for the impossible at that edge.
+auto picks NP or MVC per hole: NP while the support normals stay within 60 deg of the plane's.
 np_loose is NP asked only for the tolerances GeomPlate works to (G0 1e-4 x scale, G1 1e-2 rad):
 its time is the time at equal requested quality.
 Every fill is measured by the same function (HoleFill.continuityReport) as DESIGN.md defines:
@@ -143,7 +144,7 @@ TIERS = [("G0 1e-6", lambda r: r["g0r"] <= 1e-6), ("G0 1e-4", lambda r: r["g0r"]
 def summarize(results):
     rows = []
     for fam in ("cc", "cad"):
-        for meth in ("np", "mvc", "np_loose", "geomplate"):
+        for meth in ("np", "mvc", "auto", "np_loose", "geomplate"):
             rs = [r[meth] for r in results if r["family"] == fam]
             if not rs:
                 continue
@@ -187,6 +188,7 @@ def main():
         r = {"family": fam, "name": name, "N": hole.corners, "edges": len(hole.edges)}
         r["np"] = run_ours(shape, hole, "np")
         r["mvc"] = run_ours(shape, hole, "mvc")
+        r["auto"] = run_ours(shape, hole, "auto")
         r["np_loose"] = run_ours(shape, hole, "np", loose=True)
         r["geomplate"] = run_geomplate(doc, shape, hole)
         results.append(r)

@@ -6,7 +6,7 @@ Macro-friendly API (camelCase like FreeCAD's own):
     holes = HoleFill.findHoles(obj.Shape)                    # list of Hole
     face, report = HoleFill.fillHole(obj.Shape, holes[0], continuity="G1")
     print(report["achieved"], report["g0"], report["g1"])
-    fill = HoleFill.makeFill(obj, ["Edge3"], method="np")     # parametric document object
+    fill = HoleFill.makeFill(obj, ["Edge3"], method="auto")     # parametric document object
 
 Shapes cross into the C++ core (module HoleFillApp) as BREP text and never come
 back modified: every result is a new shape. Reports are plain dicts with the
@@ -18,7 +18,7 @@ import json
 import HoleFillApp
 
 HoleFillError = HoleFillApp.HoleFillError
-METHODS = ("np", "mvc")
+METHODS = ("auto", "np", "mvc")
 CONTINUITIES = ("G0", "G1", "G2")
 
 __all__ = ["findHoles", "fillHole", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
@@ -100,12 +100,13 @@ def _edgeIndices(shape, hole):
     return out
 
 
-def fillHole(shape, hole=1, method="np", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
              curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
-    method: "np" (nearest plane) or "mvc" (polygon / mean value mapping).
+    method: "auto" (np for height-field-like holes, else mvc), "np" (nearest plane)
+    or "mvc" (regular N-gon with mean value mapping).
     continuity: "G0", "G1" or "G2"; tolerance (model units, 0 = 1e-6 x hole size) for G0,
     angularTolerance (radians) for G1, curvatureTolerance (relative) for G2.
     progress: callable(fraction) -> bool; return False to cancel.
@@ -142,7 +143,7 @@ def continuityReport(face, shape, hole=None):
     return json.loads(HoleFillApp.continuityReport(_brep(face), _brep(shape), _edgeIndices(shape, hole)))
 
 
-def makeFill(source, edges=None, method="np", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
              output="Face", doc=None):
     """Create a parametric Fill object on `source` (a document object with a Shape).
     edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.

@@ -75,7 +75,7 @@ class FillFeature:
         return None
 
 
-def makeFill(source, edges=None, method="np", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
              output="Face", doc=None):
     if source is None or not hasattr(source, "Shape"):
         raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
