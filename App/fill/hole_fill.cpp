@@ -128,6 +128,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       c.curvature.push_back(unit[k].curvature);
       c.weight.push_back(unit[k].weight);
       c.normalValid.push_back(unit[k].normalValid);
+      c.edge.push_back(unit[k].edge);
     }
     c.referenceUV = P.interiorUV;
     c.referenceXYZ = P.interiorXYZ;

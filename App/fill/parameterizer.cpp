@@ -45,23 +45,6 @@ void nearestPlane(const std::vector<BoundarySample>& s, Parameterization& P) {
   for (const auto& x : s) P.uv.emplace_back((x.point - c).dot(e1), (x.point - c).dot(e2));
 }
 
-// Sample indices splitting the loop into `count` parts of equal arc length, starting at `first`.
-std::vector<int> equalArcCorners(const std::vector<BoundarySample>& s, int first, int count) {
-  std::vector<double> acc(s.size(), 0.0);
-  const int n = static_cast<int>(s.size());
-  for (int k = 1; k < n; ++k) acc[k] = acc[k - 1] + (s[(first + k) % n].point - s[(first + k - 1) % n].point).norm();
-  const double L = acc[n - 1] + (s[first].point - s[(first + n - 1) % n].point).norm();
-  std::vector<int> r;
-  for (int c = 0; c < count; ++c) {
-    const double target = L * c / count;
-    int best = 0;
-    for (int k = 0; k < n; ++k)
-      if (std::abs(acc[k] - target) < std::abs(acc[best] - target)) best = k;
-    r.push_back((first + best) % n);
-  }
-  return r;
-}
-
 void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const ParameterizationOptions& opt,
                Parameterization& P) {
   const int n = static_cast<int>(s.size());
@@ -69,29 +52,37 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
   std::vector<int> corners;
   for (int i = 0; i < n; ++i)
     if ((i == 0 || s[i].edge != s[i - 1].edge) && hole.edges[s[i].edge].cornerAtStart) corners.push_back(i);
-  if (static_cast<int>(corners.size()) < opt.minCorners) {
-    P.warnings.push_back("the loop has " + std::to_string(corners.size()) +
-                         " corners; MVC uses 4 virtual corners at equal arc length");
-    corners = equalArcCorners(s, corners.empty() ? 0 : corners[0], 4);
-    std::sort(corners.begin(), corners.end());
-    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-    HF_CHECK(corners.size() >= 3, "the loop is too short to place virtual corners");
-  }
-  const int N = static_cast<int>(corners.size());
   double L = 0;
   for (int i = 0; i < n; ++i) L += (s[(i + 1) % n].point - s[i].point).norm();
-  const double R = L / (2.0 * N * std::sin(M_PI / N));  // N-gon with the loop's perimeter
-  std::vector<Eigen::Vector2d> V(N);
-  for (int c = 0; c < N; ++c) V[c] = R * Eigen::Vector2d(std::cos(2 * M_PI * c / N), std::sin(2 * M_PI * c / N));
+  double R = 0;
   P.uv.assign(n, Eigen::Vector2d::Zero());
-  for (int c = 0; c < N; ++c) {
-    const int a = corners[c], b = corners[(c + 1) % N];
-    const int len = (b - a + n) % n == 0 ? n : (b - a + n) % n;
-    std::vector<double> acc(len + 1, 0.0);
-    for (int k = 1; k <= len; ++k) acc[k] = acc[k - 1] + (s[(a + k) % n].point - s[(a + k - 1) % n].point).norm();
-    for (int k = 0; k < len; ++k) {
-      const double f = acc[len] > 0 ? acc[k] / acc[len] : double(k) / len;
-      P.uv[(a + k) % n] = (1 - f) * V[c] + f * V[(c + 1) % N];
+  if (static_cast<int>(corners.size()) < opt.minCorners) {
+    // A smooth loop (or one with one or two corners) has no polygon to map to: it goes onto a
+    // circle by arc length, the N-gon's limit, so no corner appears in the pcurve that the
+    // boundary does not have.
+    P.warnings.push_back("the loop has " + std::to_string(corners.size()) + " corners; MVC maps it onto a circle");
+    R = L / (2.0 * M_PI);
+    const int first = corners.empty() ? 0 : corners[0];
+    double acc = 0;
+    for (int k = 0; k < n; ++k) {
+      const int i = (first + k) % n;
+      if (k > 0) acc += (s[i].point - s[(i + n - 1) % n].point).norm();
+      P.uv[i] = R * Eigen::Vector2d(std::cos(2 * M_PI * acc / L), std::sin(2 * M_PI * acc / L));
+    }
+  } else {
+    const int N = static_cast<int>(corners.size());
+    R = L / (2.0 * N * std::sin(M_PI / N));  // N-gon with the loop's perimeter
+    std::vector<Eigen::Vector2d> V(N);
+    for (int c = 0; c < N; ++c) V[c] = R * Eigen::Vector2d(std::cos(2 * M_PI * c / N), std::sin(2 * M_PI * c / N));
+    for (int c = 0; c < N; ++c) {
+      const int a = corners[c], b = corners[(c + 1) % N];
+      const int len = (b - a + n) % n == 0 ? n : (b - a + n) % n;
+      std::vector<double> acc(len + 1, 0.0);
+      for (int k = 1; k <= len; ++k) acc[k] = acc[k - 1] + (s[(a + k) % n].point - s[(a + k - 1) % n].point).norm();
+      for (int k = 0; k < len; ++k) {
+        const double f = acc[len] > 0 ? acc[k] / acc[len] : double(k) / len;
+        P.uv[(a + k) % n] = (1 - f) * V[c] + f * V[(c + 1) % N];
+      }
     }
   }
   P.cornerSamples = corners;
@@ -179,12 +170,21 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
     for (const auto& x : samples)
       if (x.normalValid) minCos = std::min(minCos, std::abs(x.normal.dot(m)));
     const std::string steep = std::to_string(std::acos(minCos) * 180.0 / M_PI);
+    double offPlane = 0, extent = 0;
+    for (const auto& x : samples) {
+      offPlane = std::max(offPlane, std::abs((x.point - c).dot(m)));
+      extent = std::max(extent, (x.point - c).norm());
+    }
     if (minCos >= opt.autoPlaneCos) {
-      // Over a height field a folded or flat projection means the loop itself is degenerate or
-      // self-intersecting: that error stands, MVC would only hide it.
-      Parameterization np = parameterize(hole, samples, ParamMethod::NearestPlane, opt);
-      np.warnings.push_back("auto: np (support normals within " + steep + " deg of the plane's)");
-      return np;
+      try {
+        Parameterization np = parameterize(hole, samples, ParamMethod::NearestPlane, opt);
+        np.warnings.push_back("auto: np (support normals within " + steep + " deg of the plane's)");
+        return np;
+      } catch (const Error&) {
+        // A planar loop projects exactly: its fold is the loop's own self-intersection, which
+        // MVC would only hide. A curled spatial loop may fold in projection and still be fine.
+        if (offPlane <= 1e-9 * extent) throw;
+      }
     }
     Parameterization mvc = parameterize(hole, samples, ParamMethod::MeanValue, opt);
     mvc.warnings.push_back("auto: mvc (support normals up to " + steep + " deg from the plane's)");

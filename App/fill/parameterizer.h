@@ -6,8 +6,8 @@
 //    side by chord length; mean value coordinates of interior points of the N-gon
 //    interpolate the boundary and give interior reference points (uv, xyz).
 //  - Auto: NP when every support normal is within acos(autoPlaneCos) of the least-squares
-//    plane's normal (the fill is a height field over the plane; a fold there is an error of the
-//    loop itself), else MVC.
+//    plane's normal (the fill is a height field over the plane) and the projection does not
+//    fold, else MVC; a planar loop that folds is self-intersecting and stays an error.
 //  - Support: the hole's own pcurves on its single support face (a hole cut out of one
 //    face); reproduces that face's surface when it is a B-spline, and is the reference for tests.
 // Every result is oriented counter-clockwise (u is mirrored when needed) so the filling
@@ -30,7 +30,7 @@ std::string toString(ParamMethod m);
 
 struct ParameterizationOptions {
   double margin = 0.03;           // domain = pcurve bounding box grown by this fraction of its size per side
-  int minCorners = 3;            // loops with fewer corners get 4 virtual corners at equal arc length (MVC)
+  int minCorners = 3;            // MVC maps loops with fewer corners onto a circle by arc length
   int interiorReferenceGrid = 12; // MVC interior reference points on a grid of this many cells per side
   double autoPlaneCos = 0.5;      // Auto takes NP while all |n . plane normal| >= this (60 degrees)
 };

@@ -255,6 +255,26 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
         sys.rows.push_back({b.su, b.sv, b.nv, c.normal[k], 0.0, rowWeight(o.normalWeight, b.nv, k), true, int(k)});
       }
     }
+    // Tangent guide: the linear G1 rows are also met by a surface whose cross-boundary derivative
+    // vanishes (a degenerate, flat-folded fill, e.g. over the open end of a tube). A soft pull of
+    // that derivative towards `across`, at the boundary's own speed, picks the proper branch:
+    // the fill leaves the boundary where the support would continue.
+    if (o.continuity >= Continuity::G1 && o.tangentGuideWeight > 0)
+      for (size_t k = 0; k < c.size(); ++k) {
+        if (!c.normalValid[k]) continue;
+        const size_t a = (k > 0 && c.edge[k - 1] == c.edge[k]) ? k - 1 : k;
+        const size_t b = (k + 1 < c.size() && c.edge[k + 1] == c.edge[k]) ? k + 1 : k;
+        const Eigen::Vector2d t = c.uv[b] - c.uv[a];
+        const double luv = t.norm(), l3 = (c.point[b] - c.point[a]).norm();
+        if (a == b || luv <= 0 || l3 <= 0) continue;
+        const Eigen::Vector2d w(-t.y() / luv, t.x() / luv);  // left of a counter-clockwise loop: inside
+        const LocalBasis& bk = basis[k];
+        const Eigen::Matrix<double, M, 1> coef = w.x() * bk.nu + w.y() * bk.nv;
+        const Eigen::Vector3d target = (l3 / luv) * c.across[k];
+        for (int d = 0; d < 3; ++d)
+          sys.rows.push_back({bk.su, bk.sv, coef, Eigen::Vector3d::Unit(d), target(d),
+                              rowWeight(o.tangentGuideWeight, coef, k), false, int(k)});
+      }
     for (size_t k = 0; k < c.referenceUV.size(); ++k) {
       const LocalBasis b = localBasis(U, V, c.referenceUV[k].x(), c.referenceUV[k].y(), 0);
       for (int d = 0; d < 3; ++d)

@@ -41,6 +41,7 @@ struct FillConstraints {
   std::vector<double> curvature;         // support normal curvature along `across`
   std::vector<double> weight;            // arc-length weights
   std::vector<bool> normalValid;
+  std::vector<int> edge;                 // boundary edge of each sample (pcurve tangents stay within an edge)
   std::vector<Eigen::Vector2d> referenceUV;   // optional soft interior reference points
   std::vector<Eigen::Vector3d> referenceXYZ;
   size_t size() const { return uv.size(); }
@@ -57,7 +58,8 @@ struct VariationalFillOptions {
   double positionWeight = 1e5;   // G0 rows
   double normalWeight = 1e4;     // G1 rows
   double curvatureWeight = 1e3;  // G2 rows
-  double referenceWeight = 1e-1; // soft pull to interior reference points (MVC), no multiplier
+  double referenceWeight = 1e-3; // soft pull to interior reference points (MVC), no multiplier
+  double tangentGuideWeight = 1e-2; // soft pull of the cross-boundary derivative towards `across`
   int initialSpans = 10;          // spans along the longer domain side before refinement
   int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
   int maxRefinements = 7;        // knot-insertion rounds

@@ -151,3 +151,15 @@ TEST(HoleFill, JsonReportHasTheDesignFields) {
                         "\"g0_strict\"", "\"faulty_edges\"", "\"timings\"", "\"parameterize\"", "\"solve\""})
     EXPECT_NE(j.find(k), std::string::npos) << k;
 }
+
+TEST(HoleFill, AutoPicksPlaneProjectionOnlyOverHeightFields) {
+  // A gently curved panel: NP. The open end of a cylinder, whose support normals are
+  // perpendicular to the plane of the loop: MVC, a dome tangent to the cylinder.
+  const HoleFillResult panel = fillHole(samples::panelWithHole(6, 11), 0);
+  EXPECT_EQ(panel.methodName, "auto:np");
+  const HoleFillResult cap = fillHole(samples::openCylinder(), 0);
+  EXPECT_EQ(cap.methodName, "auto:mvc");
+  EXPECT_EQ(cap.status, FillStatus::Ok) << cap.message;
+  EXPECT_TRUE(cap.closedSolid);
+  EXPECT_GT(cap.volume, M_PI * 10 * 10 * 30);  // the dome adds to the cylinder's volume
+}
