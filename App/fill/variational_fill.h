@@ -58,8 +58,8 @@ struct VariationalFillOptions {
   double positionWeight = 1e5;   // G0 rows
   double normalWeight = 1e4;     // G1 rows
   double curvatureWeight = 1e3;  // G2 rows
-  double referenceWeight = 1e-3; // soft pull to interior reference points (MVC), no multiplier
-  double tangentGuideWeight = 1e-2; // soft pull of the cross-boundary derivative towards `across`
+  double referenceWeight = 1e-1; // soft pull to interior reference points (MVC), no multiplier
+  double tangentGuideWeight = 1e-4; // soft pull of the cross-boundary derivative towards `across`
   int initialSpans = 10;          // spans along the longer domain side before refinement
   int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
   int maxRefinements = 7;        // knot-insertion rounds

@@ -180,7 +180,9 @@ def table(rows):
 
 
 def main():
-    holes = [("cc", n, s) for n, s in cc_holes()] + [("cad", n, s) for n, s in cad_holes()]
+    fams = os.environ.get("BENCH_FAMILIES", "cc,cad").split(",")
+    holes = ([("cc", n, s) for n, s in cc_holes()] if "cc" in fams else []) + \
+        ([("cad", n, s) for n, s in cad_holes()] if "cad" in fams else [])
     doc = FreeCAD.newDocument("Bench")
     results = []
     for fam, name, shape in holes:
