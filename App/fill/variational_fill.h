@@ -13,6 +13,7 @@
 // solved again, until the tolerances hold, maxControlPoints is reached or maxRefinements
 // rounds are done. G2 re-linearizes curvatureIterations times. Everything is solved in
 // the caller's (normalized) coordinates; tolerances are in those units.
+// HOLEFILL_DEBUG=1 in the environment prints per-level diagnostics (poles, errors, timings) to stderr.
 //
 // Limits: continuity that the data does not admit (support normals disagreeing at a
 // corner, a pcurve that squeezes a boundary feature) cannot be met; the result then
