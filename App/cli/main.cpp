@@ -31,7 +31,7 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  holefill holes FILE [--all] [--json]\n"
-    "  holefill fill FILE --out OUT [--hole K | --edges Edge3,Edge7,... | --all-holes]\n"
+    "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...]\n"
     "                [--face-out FACE.brep] [--method auto|np|mvc|support] [--continuity G0|G1|G2]\n"
     "                [--tolerance T] [--angular-tolerance RAD] [--json]\n"
     "  holefill samples DIR        write the bundled sample models as .brep\n"
@@ -125,7 +125,7 @@ int cmdFill(const Args& a) {
   if (a.has("--angular-tolerance")) o.angularTolerance = number(a.get("--angular-tolerance"), "--angular-tolerance");
   TopoDS_Shape shape = readShape(a.input);
   std::vector<HoleFillResult> results;
-  if (a.has("--all-holes")) {
+  if (a.has("--all-holes") || a.get("--hole") == "all") {
     const size_t n = detectHoles(shape).holes.size();
     if (n == 0) throw Error("the shape has no holes");
     for (size_t i = 0; i < n; ++i) {
