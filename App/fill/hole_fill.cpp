@@ -86,108 +86,124 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     };
     if (!progress(0.05)) return cancelled();
 
-    stage = FillStage::Sample;
-    t = Clock::now();
-    const Hole& hole = r.hole;
-    HF_CHECK(hole.scale > 0, "the hole has zero size");
-    const std::vector<BoundarySample> samples = sampleBoundary(hole, opt.sampling);
-    r.samples = static_cast<int>(samples.size());
-    for (const auto& s : samples)
-      if (!s.point.allFinite() || !s.normal.allFinite() || !std::isfinite(s.curvature))
-        throw Error("the hole boundary has non-finite coordinates (NaN or infinity) at Edge" +
-                    std::to_string(hole.edges[s.edge].edgeIndex));
-    // Normalize: centre of the boundary box at the origin, its diagonal = 1.
-    Eigen::Vector3d lo = samples[0].point, hi = samples[0].point;
-    for (const auto& s : samples) { lo = lo.cwiseMin(s.point); hi = hi.cwiseMax(s.point); }
-    const Eigen::Vector3d centre = 0.5 * (lo + hi);
-    const double scale = hole.scale;
-    std::vector<BoundarySample> unit = samples;
-    for (auto& s : unit) {
-      s.point = (s.point - centre) / scale;
-      s.curvature *= scale;
-      s.weight /= scale;
-    }
-    r.timings.sample = since(t);
+    // One attempt per sampling density; a second, denser one only when the first met the
+    // tolerances at its samples but the dense check found the boundary missed between them.
+    constexpr int kDensify = 4;
+    int density = 1;
+    while (true) {
+      stage = FillStage::Sample;
+      t = Clock::now();
+      const Hole& hole = r.hole;
+      HF_CHECK(hole.scale > 0, "the hole has zero size");
+      BoundarySamplingOptions sampling = opt.sampling;
+      sampling.minSamplesPerEdge *= density;
+      sampling.maxSamplesPerEdge *= density;
+      const std::vector<BoundarySample> samples = sampleBoundary(hole, sampling);
+      r.samples = static_cast<int>(samples.size());
+      for (const auto& s : samples)
+        if (!s.point.allFinite() || !s.normal.allFinite() || !std::isfinite(s.curvature))
+          throw Error("the hole boundary has non-finite coordinates (NaN or infinity) at Edge" +
+                      std::to_string(hole.edges[s.edge].edgeIndex));
+      // Normalize: centre of the boundary box at the origin, its diagonal = 1.
+      Eigen::Vector3d lo = samples[0].point, hi = samples[0].point;
+      for (const auto& s : samples) { lo = lo.cwiseMin(s.point); hi = hi.cwiseMax(s.point); }
+      const Eigen::Vector3d centre = 0.5 * (lo + hi);
+      const double scale = hole.scale;
+      std::vector<BoundarySample> unit = samples;
+      for (auto& s : unit) {
+        s.point = (s.point - centre) / scale;
+        s.curvature *= scale;
+        s.weight /= scale;
+      }
+      r.timings.sample += since(t);
 
-    stage = FillStage::Parameterize;
-    t = Clock::now();
-    const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
-    for (const auto& w : P.warnings) r.warnings.push_back(w);
-    r.methodName = toString(opt.method) == toString(P.chosen) ? r.methodName : toString(opt.method) + ":" + toString(P.chosen);
-    r.timings.parameterize = since(t);
-    if (!progress(0.1)) return cancelled();
+      stage = FillStage::Parameterize;
+      t = Clock::now();
+      const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
+      if (density == 1)
+        for (const auto& w : P.warnings) r.warnings.push_back(w);
+      r.methodName = toString(opt.method) == toString(P.chosen) ? r.methodName : toString(opt.method) + ":" + toString(P.chosen);
+      r.timings.parameterize += since(t);
+      if (!progress(0.1)) return cancelled();
 
-    stage = FillStage::Solve;
-    t = Clock::now();
-    FillConstraints c;
-    for (size_t k = 0; k < unit.size(); ++k) {
-      c.uv.push_back(P.uv[k]);
-      c.point.push_back(unit[k].point);
-      c.normal.push_back(unit[k].normal);
-      c.across.push_back(unit[k].across);
-      c.curvature.push_back(unit[k].curvature);
-      c.weight.push_back(unit[k].weight);
-      c.normalValid.push_back(unit[k].normalValid);
-      c.edge.push_back(unit[k].edge);
-    }
-    c.referenceUV = P.interiorUV;
-    c.referenceXYZ = P.interiorXYZ;
-    r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
-    VariationalFillOptions so = opt.solver;
-    so.continuity = opt.continuity;
-    // The solver meets slightly tighter targets at its samples than the report checks between them.
-    so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
-    so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
-    so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
-    so.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
-    const VariationalFillResult vf = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, so);
-    for (const auto& w : vf.warnings) r.warnings.push_back(w);
-    if (vf.cancelled) return cancelled();
-    BSplineSurface surf = vf.surface;
-    for (int i = 0; i < surf.poles.rows(); ++i) surf.poles.row(i) = (centre + scale * surf.poles.row(i).transpose()).transpose();
-    r.polesU = surf.numU();
-    r.polesV = surf.numV();
-    r.refinements = vf.refinements;
-    r.timings.solve = since(t);
+      stage = FillStage::Solve;
+      t = Clock::now();
+      FillConstraints c;
+      for (size_t k = 0; k < unit.size(); ++k) {
+        c.uv.push_back(P.uv[k]);
+        c.point.push_back(unit[k].point);
+        c.normal.push_back(unit[k].normal);
+        c.across.push_back(unit[k].across);
+        c.curvature.push_back(unit[k].curvature);
+        c.weight.push_back(unit[k].weight);
+        c.normalValid.push_back(unit[k].normalValid);
+        c.edge.push_back(unit[k].edge);
+      }
+      c.referenceUV = P.interiorUV;
+      c.referenceXYZ = P.interiorXYZ;
+      r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
+      VariationalFillOptions so = opt.solver;
+      so.continuity = opt.continuity;
+      // The solver meets slightly tighter targets at its samples than the report checks between them.
+      so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
+      so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
+      so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
+      so.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
+      const VariationalFillResult vf = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, so);
+      for (const auto& w : vf.warnings) r.warnings.push_back(w);
+      if (vf.cancelled) return cancelled();
+      BSplineSurface surf = vf.surface;
+      for (int i = 0; i < surf.poles.rows(); ++i) surf.poles.row(i) = (centre + scale * surf.poles.row(i).transpose()).transpose();
+      r.polesU = surf.numU();
+      r.polesV = surf.numV();
+      r.refinements = vf.refinements;
+      r.timings.solve += since(t);
 
-    stage = FillStage::Build;
-    t = Clock::now();
-    const FaceBuildResult fb = buildTrimmedFace(hole, toOcct(surf), samples, P.uv);
-    r.face = fb.face;
-    if (opt.sew) {
-      const SewResult sr = sewFace(work, r.face);
-      r.shape = sr.shape;
-      r.closedSolid = sr.closedSolid;
-      r.volume = sr.volume;
-    }
-    r.timings.build = since(t);
+      stage = FillStage::Build;
+      t = Clock::now();
+      const FaceBuildResult fb = buildTrimmedFace(hole, toOcct(surf), samples, P.uv);
+      r.face = fb.face;
+      if (opt.sew) {
+        const SewResult sr = sewFace(work, r.face);
+        r.shape = sr.shape;
+        r.closedSolid = sr.closedSolid;
+        r.volume = sr.volume;
+      }
+      r.timings.build += since(t);
 
-    stage = FillStage::Check;
-    t = Clock::now();
-    r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
-    r.shapeValid = opt.sew ? BRepCheck_Analyzer(r.shape).IsValid() : r.faceValid;
-    r.report = continuityReport(r.face, hole);
-    r.achieved = r.report.achieved(r.g0Tolerance, opt.angularTolerance, opt.curvatureTolerance);
-    for (const auto& e : r.report.edges) {
-      const bool bad = e.g0 > r.g0Tolerance || (opt.continuity >= Continuity::G1 && e.g1 > opt.angularTolerance) ||
-                       (opt.continuity == Continuity::G2 && e.g2 > opt.curvatureTolerance);
-      if (bad) r.faultyEdges.push_back(e.edgeIndex);
-    }
-    r.timings.check = since(t);
-    const int reached = r.achieved == "none" ? -1 : r.achieved[1] - '0';
-    if (!r.faceValid || !r.shapeValid) {
-      r.status = FillStatus::Failed;
-      r.failedStage = FillStage::Check;
-      r.message = std::string("the filled ") + (!r.faceValid ? "face" : "model") + " is not a valid B-rep (BRepCheck)";
-    } else if (reached < static_cast<int>(opt.continuity)) {
-      r.status = FillStatus::ToleranceNotMet;
-      r.failedStage = FillStage::Solve;
-      r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
-                  ", G1 " + std::to_string(r.report.g1) + " rad, G2 " + std::to_string(r.report.g2) +
-                  "); worst at " + edgeList(r.faultyEdges);
-    } else {
-      r.status = FillStatus::Ok;
-      r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
+      stage = FillStage::Check;
+      t = Clock::now();
+      r.faultyEdges.clear();
+      r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
+      r.shapeValid = opt.sew ? BRepCheck_Analyzer(r.shape).IsValid() : r.faceValid;
+      r.report = continuityReport(r.face, hole);
+      r.achieved = r.report.achieved(r.g0Tolerance, opt.angularTolerance, opt.curvatureTolerance);
+      for (const auto& e : r.report.edges) {
+        const bool bad = e.g0 > r.g0Tolerance || (opt.continuity >= Continuity::G1 && e.g1 > opt.angularTolerance) ||
+                         (opt.continuity == Continuity::G2 && e.g2 > opt.curvatureTolerance);
+        if (bad) r.faultyEdges.push_back(e.edgeIndex);
+      }
+      r.timings.check += since(t);
+      const int reached = r.achieved == "none" ? -1 : r.achieved[1] - '0';
+      if (!r.faceValid || !r.shapeValid) {
+        r.status = FillStatus::Failed;
+        r.failedStage = FillStage::Check;
+        r.message = std::string("the filled ") + (!r.faceValid ? "face" : "model") + " is not a valid B-rep (BRepCheck)";
+      } else if (reached < static_cast<int>(opt.continuity)) {
+        r.status = FillStatus::ToleranceNotMet;
+        r.failedStage = FillStage::Solve;
+        r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
+                    ", G1 " + std::to_string(r.report.g1) + " rad, G2 " + std::to_string(r.report.g2) +
+                    "); worst at " + edgeList(r.faultyEdges);
+      } else {
+        r.status = FillStatus::Ok;
+        r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
+      }
+      // Met at the samples but not between them: the boundary needs denser samples, once.
+      if (r.status != FillStatus::ToleranceNotMet || !vf.toleranceMet || density > 1) break;
+      r.warnings.push_back("tolerances met at the samples but not between them: resampled " +
+                           std::to_string(kDensify) + "x denser");
+      density = kDensify;
     }
   } catch (const Error& e) {
     if (stage == FillStage::Detect) throw;  // the hole could not be named: the caller's mistake
