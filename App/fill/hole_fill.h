@@ -33,7 +33,7 @@ struct HoleFillOptions {
   BoundarySamplingOptions sampling;
   ParameterizationOptions parameterization;
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
-  double solverMargin = 0.8;        // the solver aims at this fraction of each tolerance at its samples
+  double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
   bool sew = true;                  // also build the model with the face sewn in
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel
 };
