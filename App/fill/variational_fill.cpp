@@ -203,7 +203,18 @@ double worstRatio(const Errors& e, const VariationalFillOptions& o) {
   return w;
 }
 
+// Highest order met in sequence: -1 none, 0 G0, 1 G0+G1, 2 G0+G1+G2.
+int levelMet(const Errors& e, const VariationalFillOptions& o) {
+  if (e.g0 > o.g0Tolerance) return -1;
+  if (o.continuity >= Continuity::G1 && e.g1 > o.g1Tolerance) return 0;
+  if (o.continuity == Continuity::G2 && e.g2 > o.g2Tolerance) return 1;
+  return static_cast<int>(o.continuity);
+}
+
+// Lexicographic: a G2 request that cannot be met keeps the best G1 (and G0) it found on the way.
 bool better(const Errors& a, const Errors& b, const VariationalFillOptions& o) {
+  const int la = levelMet(a, o), lb = levelMet(b, o);
+  if (la != lb) return la > lb;
   return worstRatio(a, o) < worstRatio(b, o);
 }
 
