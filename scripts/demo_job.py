@@ -46,6 +46,7 @@ for name in NAMES:
 with open(os.path.join(OUT, "summary.json"), "w") as f:
     json.dump(summary, f, indent=1)
 
+print()
 hdr = "%-20s %-4s %-4s %-4s %-18s %-10s %-10s %-10s %-9s %-7s %s" % (
     "sample", "N", "meth", "req", "status", "G0/scale", "G1 [rad]", "G2 [rel]", "poles", "time s", "achieved")
 print(hdr)

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The CLI on good inputs: holes are listed, a hole named by one FreeCAD edge name is filled, the
+# sewn model (.step) and the face alone (.brep) are written, --json parses and reports G1 reached.
+set -u
+H=${HOLEFILL:?}
+T=$1
+rm -rf "$T"; mkdir -p "$T"
+fail=0; pass=0
+check() { if eval "$2"; then pass=$((pass+1)); echo "ok   $1"; else fail=$((fail+1)); echo "FAIL $1"; fi; }
+"$H" samples "$T" >/dev/null
+"$H" holes "$T/panel_6_sided.brep" --json >"$T/holes.json"
+check "holes --json lists one 6-sided hole" \
+  "/usr/bin/python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); h=d[\"holes\"]; assert len(h)==1 and h[0][\"corners\"]==6' $T/holes.json"
+edge=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["holes"][0]["edges"][2])' "$T/holes.json")
+"$H" fill "$T/panel_6_sided.brep" --edges "$edge" --out "$T/out.step" --face-out "$T/face.brep" --json >"$T/fill.json"
+rc=$?
+check "fill by one edge name ($edge) exits 0" "[ $rc = 0 ]"
+check "sewn model and face written" "[ -s $T/out.step ] && [ -s $T/face.brep ] && ! ls $T/*.tmp* >/dev/null 2>&1"
+check "report: G1 reached at the strict tier" \
+  "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))[0]; assert r[\"status\"]==\"ok\" and r[\"achieved\"] in (\"G1\",\"G2\") and r[\"str\"][\"g0_strict\"] and r[\"str\"][\"g1_strict\"] and r[\"shape_valid\"]' $T/fill.json"
+"$H" holes "$T/out.step" >"$T/after.txt"
+check "the written model has no hole left" "grep -q 'no holes' $T/after.txt"
+"$H" fill "$T/sheet_two_holes.brep" --hole all --out "$T/both.brep" >"$T/both.txt"
+check "--hole all fills both holes of a sheet" "[ \$(grep -c '^hole' $T/both.txt) = 2 ] && \"$H\" holes $T/both.brep | grep -q 'no holes'"
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
