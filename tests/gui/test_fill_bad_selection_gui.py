@@ -1,0 +1,81 @@
+"""GUI test: the Fill hole task panel with bad selections (nothing, a face, an edge that is not on a
+hole) shows a clear message, OK keeps the panel open, Cancel leaves the document exactly as it was."""
+import os
+
+import FreeCAD
+import FreeCADGui
+import Part
+from PySide2 import QtWidgets
+
+import guiharness as h
+
+
+def visible_texts(mw):
+    texts = [w.text() for w in mw.findChildren(QtWidgets.QLabel) if w.isVisible()]
+    texts += [w.toPlainText() for w in mw.findChildren(QtWidgets.QPlainTextEdit) if w.isVisible()]
+    return " | ".join(texts)
+
+
+def button(mw, which):
+    for box in mw.findChildren(QtWidgets.QDialogButtonBox):
+        b = box.button(which)
+        if box.isVisible() and b is not None and b.isVisible():
+            return b
+    return None
+
+
+def body():
+    import HoleFill
+    FreeCADGui.activateWorkbench("HoleFillWorkbench")
+    doc = FreeCAD.newDocument("GuiBad")
+    box = doc.addObject("Part::Box", "Box")  # a closed solid: no holes at all
+    panel = doc.addObject("Part::Feature", "Panel")
+    s = Part.Shape()
+    s.read(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples", "panel_6_sided.brep"))
+    panel.Shape = s
+    doc.recompute()
+    names = sorted(o.Name for o in doc.Objects)
+    mw = FreeCADGui.getMainWindow()
+
+    # 1. Nothing selected: the panel asks for an edge; OK does not create anything.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.runCommand("HoleFill_FillHole")
+    h.pump(600)
+    assert "Select one edge of a hole" in visible_texts(mw), visible_texts(mw)
+    button(mw, QtWidgets.QDialogButtonBox.Ok).click()
+    h.pump(600)
+    assert "No hole selected" in visible_texts(mw), visible_texts(mw)
+    assert sorted(o.Name for o in doc.Objects) == names
+    button(mw, QtWidgets.QDialogButtonBox.Cancel).click()
+    h.pump(600)
+
+    # 2. An edge of a closed box: not on any hole.
+    FreeCADGui.Selection.addSelection(doc.Name, "Box", "Edge1")
+    FreeCADGui.runCommand("HoleFill_FillHole")
+    h.pump(600)
+    assert "is not on one hole loop" in visible_texts(mw), visible_texts(mw)
+    button(mw, QtWidgets.QDialogButtonBox.Ok).click()
+    h.pump(1500)
+    assert "Fill failed" in visible_texts(mw), visible_texts(mw)
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.fitAll()
+    h.pump(300)
+    QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_bad_1_not_a_hole.png"))
+    button(mw, QtWidgets.QDialogButtonBox.Cancel).click()
+    h.pump(800)
+    assert sorted(o.Name for o in doc.Objects) == names, sorted(o.Name for o in doc.Objects)
+
+    # 3. A face selected (no edge): treated as nothing selected.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, "Panel", "Face1")
+    FreeCADGui.runCommand("HoleFill_FillHole")
+    h.pump(600)
+    assert "Select one edge of a hole" in visible_texts(mw), visible_texts(mw)
+    button(mw, QtWidgets.QDialogButtonBox.Cancel).click()
+    h.pump(600)
+    assert sorted(o.Name for o in doc.Objects) == names
+    assert panel.Shape.isValid() and len(panel.Shape.Faces) == 1
+    h.finish(True)
+
+
+h.run(body, 500)
