@@ -20,21 +20,25 @@ SurfaceJet supportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t
   return faceJet(s, face.Orientation() == TopAbs_REVERSED, uv.X(), uv.Y());
 }
 
-bool regularSupportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, SurfaceJet& jet, Eigen::Vector3d& n) {
-  BRepAdaptor_Curve2d pc(edge, face);
-  BRepAdaptor_Surface s(face, Standard_False);
-  const bool rev = face.Orientation() == TopAbs_REVERSED;
-  const double a = pc.FirstParameter(), b = pc.LastParameter();
+SupportView::SupportView(const TopoDS_Edge& edge, const TopoDS_Face& face)
+    : pcurve(edge, face), surface(face, Standard_False), reversed(face.Orientation() == TopAbs_REVERSED) {}
+
+bool SupportView::regularJet(double t, SurfaceJet& jet, Eigen::Vector3d& n) const {
+  const double a = pcurve.FirstParameter(), b = pcurve.LastParameter();
   for (double step : {0.0, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3}) {
     for (double sign : {1.0, -1.0}) {
       const double tt = std::clamp(t + sign * step * (b - a), a, b);
-      const gp_Pnt2d uv = pc.Value(tt);
-      jet = faceJet(s, rev, uv.X(), uv.Y());
+      const gp_Pnt2d uv = pcurve.Value(tt);
+      jet = faceJet(surface, reversed, uv.X(), uv.Y());
       if (unitNormal(jet, n)) return true;
       if (step == 0.0) break;
     }
   }
   return false;
+}
+
+bool regularSupportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, SurfaceJet& jet, Eigen::Vector3d& n) {
+  return SupportView(edge, face).regularJet(t, jet, n);
 }
 
 bool supportNormal(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, Eigen::Vector3d& n) {
@@ -86,6 +90,7 @@ std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySampl
     std::vector<double> ts = uniformAbscissa(c, n);
     const bool reversed = he.edge.Orientation() == TopAbs_REVERSED;
     if (reversed) std::reverse(ts.begin(), ts.end());
+    const SupportView support(he.edge, he.support);
     for (size_t i = 0; i < ts.size(); ++i) {
       BoundarySample s;
       s.t = ts[i];
@@ -103,7 +108,7 @@ std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySampl
       s.tangent = tan.normalized() * (reversed ? -1.0 : 1.0);
       s.weight = len / n * ((i == 0 || i + 1 == ts.size()) ? 0.5 : 1.0);
       SurfaceJet j;
-      s.normalValid = regularSupportJet(he.edge, he.support, s.t, j, s.normal);
+      s.normalValid = support.regularJet(s.t, j, s.normal);
       if (s.normalValid) {
         // The hole interior is to the left of the traversal about the support normal.
         s.across = s.normal.cross(s.tangent).normalized();

@@ -10,6 +10,8 @@
 // appears once per adjacent edge with that edge's support normal.
 #pragma once
 
+#include <BRepAdaptor_Curve2d.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <Eigen/Dense>
 #include <vector>
 
@@ -37,6 +39,18 @@ struct BoundarySamplingOptions {
 };
 
 std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySamplingOptions& options = {});
+
+// The support face as seen from one of its edges: the edge's pcurve and the face's surface,
+// built once (OCCT adaptors are costly to construct) and evaluated at many edge parameters.
+struct SupportView {
+  SupportView(const TopoDS_Edge& edge, const TopoDS_Face& face);
+  // Jet and oriented unit normal at edge parameter t; at singular points (a collapsed blend
+  // corner, a pole) the limit along the edge: the nearest regular point within 1e-3 of the range.
+  bool regularJet(double t, SurfaceJet& jet, Eigen::Vector3d& n) const;
+  BRepAdaptor_Curve2d pcurve;
+  BRepAdaptor_Surface surface;
+  bool reversed;
+};
 
 // Jet of the support face at the point of `edge` with curve parameter t (via the edge's pcurve on the face).
 SurfaceJet supportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t);

@@ -31,7 +31,11 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
   r.scale = hole.scale;
   for (const auto& he : hole.edges) r.edges.push_back({he.edgeIndex, 0, 0, 0});
   std::vector<BRepAdaptor_Curve> curves;
-  for (const auto& he : hole.edges) curves.emplace_back(he.edge);
+  std::vector<SupportView> supports;
+  for (const auto& he : hole.edges) {
+    curves.emplace_back(he.edge);
+    supports.emplace_back(he.edge, he.support);
+  }
   BRepAdaptor_Surface fs(face, Standard_False);
   const bool frev = face.Orientation() == TopAbs_REVERSED;
   for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
@@ -61,12 +65,11 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
         }
       }
       if (best < 0) continue;
-      const HoleEdge& he = hole.edges[best];
       const double g0 = std::sqrt(bestD);
       double g1 = 0, g2 = 0;
       Eigen::Vector3d nf, nb;
       SurfaceJet jb;
-      if (regularSupportJet(he.edge, he.support, bestT, jb, nb) && unitNormal(jf, nf)) {
+      if (supports[best].regularJet(bestT, jb, nb) && unitNormal(jf, nf)) {
         g1 = std::acos(std::min(1.0, std::abs(nf.dot(nb))));
         gp_Pnt p;
         gp_Vec d1;
