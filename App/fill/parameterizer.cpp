@@ -157,7 +157,7 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
       throw Error("the hole boundary is degenerate: its points lie on a line, so it encloses no area");
   }
   if (method == ParamMethod::Auto) {
-    // NP suits holes whose support normals all stay within 45 degrees of the plane's normal (the
+    // NP suits holes whose support normals all stay within 36.9 degrees of the plane's normal (the
     // fill is a height field over the plane); steeper boundaries get compressed there, so MVC.
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     double W = 0;

@@ -32,7 +32,7 @@ struct ParameterizationOptions {
   double margin = 0.03;           // domain = pcurve bounding box grown by this fraction of its size per side
   int minCorners = 3;            // MVC maps loops with fewer corners onto a circle by arc length
   int interiorReferenceGrid = 12; // MVC interior reference points on a grid of this many cells per side
-  double autoPlaneCos = 0.707;    // Auto takes NP while all |n . plane normal| >= this (45 degrees)
+  double autoPlaneCos = 0.8;      // Auto takes NP while all |n . plane normal| >= this (36.9 deg: NP compresses <= 20%)
 };
 
 struct Parameterization {

@@ -9,7 +9,7 @@ Families
        Only faces that were themselves G1 with all their neighbours (measured with the same
        report, G1 <= 1e-3 rad) are taken: the removed face is a witness that a G1 fill exists.
        A face meeting a neighbour at a sharp edge asks for the impossible at that edge.
-auto picks NP or MVC per hole: NP while the support normals stay within 45 deg of the plane's.
+auto picks NP or MVC per hole: NP while the support normals stay within 36.9 deg of the plane's.
 np_loose is NP asked only for the tolerances GeomPlate works to (G0 1e-4 x scale, G1 1e-2 rad):
 its time is the time at equal requested quality.
 Every fill is measured by the same function (HoleFill.continuityReport) as DESIGN.md defines:
@@ -107,7 +107,8 @@ def run_ours(shape, hole, method, loose=False):
         face, rep = HoleFill.fillHole(shape, hole, method=method, continuity="G1", **tol)
         dt = time.time() - t
         return {"ok": rep["face_valid"], "time": dt, "core": rep["timings"]["total"], "g0r": rep["g0_relative"],
-                "g1": rep["g1"], "g2": rep["g2"], "status": rep["status"]}
+                "g1": rep["g1"], "g2": rep["g2"], "status": rep["status"], "method": rep["method"],
+                "notes": [w for w in rep["warnings"] if w.startswith("auto")]}
     except HoleFill.HoleFillError as e:
         return {"ok": False, "time": time.time() - t, "error": str(e)[:200]}
 
