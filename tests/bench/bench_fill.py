@@ -36,6 +36,9 @@ CAD_MODELS = ["occ/Bottom.brep", "occ/Top.brep", "occ/bottle.brep", "occ/CrankAr
               "occ/MODERN_Refrigerator_1_opened.brep", "occ/MODERN_Cooker_1.brep", "occ/Pump_Nut.brep",
               "step/screw.step", "occ/wing.brep"]
 PER_MODEL = int(os.environ.get("BENCH_PER_MODEL", "3"))
+# Each timing is the fastest of REPEATS runs (quality from the first): this shared 2-core
+# machine moves single timings by +-20%.
+REPEATS = int(os.environ.get("BENCH_REPEATS", "3"))
 CAD_TARGET = int(os.environ.get("BENCH_CAD_HOLES", "24"))
 
 
@@ -106,6 +109,13 @@ def run_ours(shape, hole, method, loose=False):
         tol = dict(tolerance=1e-4 * hole["scale"], angularTolerance=1e-2) if loose else {}
         face, rep = HoleFill.fillHole(shape, hole, method=method, continuity="G1", **tol)
         dt = time.time() - t
+        core = rep["timings"]["total"]
+        for _ in range(REPEATS - 1):
+            t = time.time()
+            _, again = HoleFill.fillHole(shape, hole, method=method, continuity="G1", **tol)
+            dt = min(dt, time.time() - t)
+            core = min(core, again["timings"]["total"])
+        rep["timings"]["total"] = core
         return {"ok": rep["face_valid"], "time": dt, "core": rep["timings"]["total"], "g0r": rep["g0_relative"],
                 "g1": rep["g1"], "g2": rep["g2"], "status": rep["status"], "method": rep["method"],
                 "notes": [w for w in rep["warnings"] if w.startswith("auto")]}
@@ -124,6 +134,11 @@ def run_geomplate(doc, shape, hole):
     t = time.time()
     doc.recompute()
     dt = time.time() - t
+    for _ in range(REPEATS - 1):
+        f.touch()
+        t = time.time()
+        doc.recompute()
+        dt = min(dt, time.time() - t)
     try:
         if not f.isValid() or f.Shape.isNull() or len(f.Shape.Faces) != 1 or not f.Shape.Faces[0].isValid():
             return {"ok": False, "time": dt, "error": f.getStatusString()}
