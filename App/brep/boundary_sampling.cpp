@@ -13,13 +13,6 @@
 
 namespace holefill {
 
-SurfaceJet supportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t) {
-  BRepAdaptor_Curve2d pc(edge, face);
-  const gp_Pnt2d uv = pc.Value(t);
-  BRepAdaptor_Surface s(face, Standard_False);
-  return faceJet(s, face.Orientation() == TopAbs_REVERSED, uv.X(), uv.Y());
-}
-
 SupportView::SupportView(const TopoDS_Edge& edge, const TopoDS_Face& face)
     : pcurve(edge, face), surface(face, Standard_False), reversed(face.Orientation() == TopAbs_REVERSED) {}
 
@@ -37,13 +30,9 @@ bool SupportView::regularJet(double t, SurfaceJet& jet, Eigen::Vector3d& n) cons
   return false;
 }
 
-bool regularSupportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, SurfaceJet& jet, Eigen::Vector3d& n) {
-  return SupportView(edge, face).regularJet(t, jet, n);
-}
-
 bool supportNormal(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, Eigen::Vector3d& n) {
   SurfaceJet j;
-  return regularSupportJet(edge, face, t, j, n);
+  return SupportView(edge, face).regularJet(t, j, n);
 }
 
 namespace {

@@ -52,12 +52,8 @@ struct SupportView {
   bool reversed;
 };
 
-// Jet of the support face at the point of `edge` with curve parameter t (via the edge's pcurve on the face).
-SurfaceJet supportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t);
-// Jet and oriented unit normal of the support there. Where the surface is singular (a collapsed
-// blend corner, a pole) the limit along the edge is taken: the nearest regular point within
-// 1e-3 of the edge's range. False when there is none.
-bool regularSupportJet(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, SurfaceJet& jet, Eigen::Vector3d& n);
+// Oriented unit normal of the support face at edge parameter t (limit at singular points, as
+// SupportView::regularJet); false when there is none. For a few queries; loops use SupportView.
 bool supportNormal(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, Eigen::Vector3d& n);
 
 }  // namespace holefill

@@ -130,18 +130,6 @@ void support(const Hole& hole, const std::vector<BoundarySample>& s, Parameteriz
 
 }  // namespace
 
-double boundaryDistortion(const std::vector<BoundarySample>& s, const std::vector<Eigen::Vector2d>& uv) {
-  std::vector<double> r;
-  for (size_t k = 0; k + 1 < s.size(); ++k) {
-    const double d3 = (s[k + 1].point - s[k].point).norm();
-    if (s[k + 1].edge == s[k].edge && d3 > 0) r.push_back((uv[k + 1] - uv[k]).norm() / d3);
-  }
-  if (r.size() < 4) return 1e300;
-  std::sort(r.begin(), r.end());
-  const double lo = r[r.size() / 20], hi = r[r.size() - 1 - r.size() / 20];
-  return lo > 0 ? hi / lo : 1e300;
-}
-
 Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,
                               const ParameterizationOptions& opt) {
   HF_CHECK(samples.size() >= 6, "a hole boundary needs at least 6 samples");
@@ -222,7 +210,6 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
     box = Eigen::AlignedBox2d();
     for (const auto& q : P.uv) box.extend(q);
   }
-  P.distortion = boundaryDistortion(samples, P.uv);
   if (!fixedDomain) {
     const Eigen::Vector2d ext = box.sizes();
     const double m = opt.margin * std::max(ext.x(), ext.y());

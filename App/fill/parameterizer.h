@@ -44,12 +44,8 @@ struct Parameterization {
   std::vector<int> cornerSamples;            // sample indices of the corners used
   bool mirroredU = false;
   ParamMethod chosen = ParamMethod::NearestPlane;  // the method used (differs from the request for Auto)
-  double distortion = 0.0;                          // see boundaryDistortion()
   std::vector<std::string> warnings;
 };
-
-// Spread of |Δuv| / |Δxyz| over the loop's segments: 95th over 5th percentile (1 = isometric up to scale).
-double boundaryDistortion(const std::vector<BoundarySample>& samples, const std::vector<Eigen::Vector2d>& uv);
 
 // `samples` must be in the coordinates the fill is solved in (normalized); `hole` gives corners and supports.
 Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,

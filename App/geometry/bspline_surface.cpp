@@ -32,13 +32,6 @@ std::array<std::array<Eigen::Vector3d, 4>, 4> BSplineSurface::derivatives(double
 
 Eigen::Vector3d BSplineSurface::point(double u, double v) const { return derivatives(u, v, 0)[0][0]; }
 
-Eigen::Vector3d BSplineSurface::normal(double u, double v) const {
-  const auto d = derivatives(u, v, 1);
-  const Eigen::Vector3d n = d[1][0].cross(d[0][1]);
-  const double len = n.norm();
-  return len > 1e-300 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
-}
-
 namespace {
 // Boehm insertion of one knot into a curve of control points (The NURBS Book A5.1, r = 1).
 std::vector<Eigen::Vector3d> insertIntoCurve(const std::vector<double>& U, int p, const std::vector<Eigen::Vector3d>& P,

@@ -24,7 +24,6 @@ struct BSplineSurface {
   Eigen::Vector3d point(double u, double v) const;
   // d[k][l] = d^{k+l} S / du^k dv^l for k + l <= order (order <= 3).
   std::array<std::array<Eigen::Vector3d, 4>, 4> derivatives(double u, double v, int order) const;
-  Eigen::Vector3d normal(double u, double v) const;  // unit S_u x S_v (zero if degenerate)
 };
 
 // Surface with the knot inserted once in u (dir = 0) or v (dir = 1); the geometry is unchanged.
