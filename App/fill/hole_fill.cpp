@@ -2,6 +2,10 @@
 
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <Standard_Failure.hxx>
 #include <chrono>
 #include <cmath>
@@ -67,13 +71,28 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
   FillStage stage = FillStage::Detect;
   auto progress = [&](double f) { return !opt.progress || opt.progress(f); };
   try {
-    // Work on a deep copy: the new pcurves and tolerances go onto the copy's edges.
+    // The new pcurves and tolerances go onto edges the user's shape does not own: a deep copy of
+    // the model when the face is sewn into it, else copies of the hole's edges alone (one copy,
+    // so consecutive edges keep sharing their vertices), which costs nothing on large models.
     auto t = Clock::now();
-    BRepBuilderAPI_Copy copier(model, Standard_True, Standard_False);
-    const TopoDS_Shape work = copier.Shape();
+    const TopoDS_Shape work = opt.sew ? BRepBuilderAPI_Copy(model, Standard_True, Standard_False).Shape() : model;
     const HoleDetectionResult det = detectHoles(work, opt.detection);
     r.warnings = det.warnings;
     r.hole = holeContainingEdges(det, holeEdges);
+    if (!opt.sew) {
+      // Copy the support faces (which carry the edges' pcurves), sharing their geometry.
+      BRep_Builder B;
+      TopoDS_Compound supports;
+      B.MakeCompound(supports);
+      TopTools_IndexedMapOfShape seen;
+      for (const auto& he : r.hole.edges)
+        if (seen.Add(he.support) == seen.Extent()) B.Add(supports, he.support);
+      BRepBuilderAPI_Copy copier(supports, Standard_False, Standard_False);
+      for (auto& he : r.hole.edges) {
+        he.edge = TopoDS::Edge(copier.ModifiedShape(he.edge).Oriented(he.edge.Orientation()));
+        he.support = TopoDS::Face(copier.ModifiedShape(he.support).Oriented(he.support.Orientation()));
+      }
+    }
     for (size_t i = 0; i < det.holes.size(); ++i)
       if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
     r.timings.detect = since(t);

@@ -56,6 +56,14 @@ TEST(HoleFill, SourceShapeIsNeverModified) {
   const HoleFillResult r = fillHole(model, 0);
   ASSERT_EQ(r.status, FillStatus::Ok) << r.message;
   EXPECT_EQ(shapeToBrepString(model), before);
+  // Without sewing only the hole's edges are copied; the face is valid on its own.
+  HoleFillOptions o;
+  o.sew = false;
+  const HoleFillResult f = fillHole(model, 0, o);
+  ASSERT_EQ(f.status, FillStatus::Ok) << f.message << " at " << toString(f.failedStage);
+  EXPECT_TRUE(f.faceValid);
+  EXPECT_TRUE(f.shape.IsNull());
+  EXPECT_EQ(shapeToBrepString(model), before);
 }
 
 TEST(HoleFill, SupportParameterizationReproducesTheCutSurface) {
