@@ -33,16 +33,31 @@ std::string toString(ParamMethod m) {
 
 namespace {
 
-void nearestPlane(const std::vector<BoundarySample>& s, Parameterization& P) {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+// Least-squares plane of the loop (arc-length weighted): centre, and the principal axes by
+// increasing variance (axis(0) is the normal, axis(2) the longest in-plane direction).
+struct PlaneFit {
+  Eigen::Vector3d centre;
+  Eigen::Vector3d variance;
+  Eigen::Matrix3d axis;
+};
+
+PlaneFit fitPlane(const std::vector<BoundarySample>& s) {
+  PlaneFit f;
+  f.centre.setZero();
   double W = 0;
-  for (const auto& x : s) { c += x.weight * x.point; W += x.weight; }
-  c /= W;
+  for (const auto& x : s) { f.centre += x.weight * x.point; W += x.weight; }
+  f.centre /= W;
   Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-  for (const auto& x : s) C += x.weight * (x.point - c) * (x.point - c).transpose();
+  for (const auto& x : s) C += x.weight * (x.point - f.centre) * (x.point - f.centre).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
-  const Eigen::Vector3d e1 = es.eigenvectors().col(2), e2 = es.eigenvectors().col(1);
-  for (const auto& x : s) P.uv.emplace_back((x.point - c).dot(e1), (x.point - c).dot(e2));
+  f.variance = es.eigenvalues();
+  f.axis = es.eigenvectors();
+  return f;
+}
+
+void nearestPlane(const std::vector<BoundarySample>& s, Parameterization& P) {
+  const PlaneFit f = fitPlane(s);
+  for (const auto& x : s) P.uv.emplace_back((x.point - f.centre).dot(f.axis.col(2)), (x.point - f.centre).dot(f.axis.col(1)));
 }
 
 void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const ParameterizationOptions& opt,
@@ -133,36 +148,21 @@ void support(const Hole& hole, const std::vector<BoundarySample>& s, Parameteriz
 Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample>& samples, ParamMethod method,
                               const ParameterizationOptions& opt) {
   HF_CHECK(samples.size() >= 6, "a hole boundary needs at least 6 samples");
-  {
-    // A loop whose points lie on a line (a slit, two coincident edges) encloses nothing.
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (const auto& x : samples) c += x.point;
-    c /= static_cast<double>(samples.size());
-    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-    for (const auto& x : samples) C += (x.point - c) * (x.point - c).transpose();
-    const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvalues();
-    if (!(ev(1) > 1e-12 * ev(2)))
-      throw Error("the hole boundary is degenerate: its points lie on a line, so it encloses no area");
-  }
+  const PlaneFit plane = fitPlane(samples);
+  // A loop whose points lie on a line (a slit, two coincident edges) encloses nothing.
+  if (!(plane.variance(1) > 1e-12 * plane.variance(2)))
+    throw Error("the hole boundary is degenerate: its points lie on a line, so it encloses no area");
   if (method == ParamMethod::Auto) {
     // NP suits holes whose support normals all stay within 36.9 degrees of the plane's normal (the
     // fill is a height field over the plane); steeper boundaries get compressed there, so MVC.
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    double W = 0;
-    for (const auto& x : samples) { c += x.weight * x.point; W += x.weight; }
-    c /= W;
-    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-    for (const auto& x : samples) C += x.weight * (x.point - c) * (x.point - c).transpose();
-    const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(C).eigenvectors().col(0);
-    double minCos = 1.0;
-    for (const auto& x : samples)
-      if (x.normalValid) minCos = std::min(minCos, std::abs(x.normal.dot(m)));
-    const std::string steep = std::to_string(std::acos(minCos) * 180.0 / M_PI);
-    double offPlane = 0, extent = 0;
+    const Eigen::Vector3d m = plane.axis.col(0);
+    double minCos = 1.0, offPlane = 0, extent = 0;
     for (const auto& x : samples) {
-      offPlane = std::max(offPlane, std::abs((x.point - c).dot(m)));
-      extent = std::max(extent, (x.point - c).norm());
+      if (x.normalValid) minCos = std::min(minCos, std::abs(x.normal.dot(m)));
+      offPlane = std::max(offPlane, std::abs((x.point - plane.centre).dot(m)));
+      extent = std::max(extent, (x.point - plane.centre).norm());
     }
+    const std::string steep = std::to_string(std::acos(minCos) * 180.0 / M_PI);
     if (minCos >= opt.autoPlaneCos) {
       try {
         Parameterization np = parameterize(hole, samples, ParamMethod::NearestPlane, opt);

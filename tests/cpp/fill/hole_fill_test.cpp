@@ -101,20 +101,23 @@ TEST(HoleFill, UnreachableG2IsReportedNotDowngraded) {
   EXPECT_NE(r.message.find("requested G2"), std::string::npos);
 }
 
-TEST(HoleFill, SelfIntersectingLoopFailsAtParameterize) {
-  // A figure-of-eight inner loop: its plane projection folds.
-  gp_Pln pln;
-  BRepBuilderAPI_MakeFace base(pln, -10, 10, -10, 10);
-  auto v = [](double x, double y) { return BRepBuilderAPI_MakeVertex(gp_Pnt(x, y, 0)).Vertex(); };
-  const TopoDS_Vertex a = v(-4, -4), b = v(4, 4), c = v(4, -4), d = v(-4, 4);
+namespace {
+// A planar square sheet with one inner loop of straight edges through the given points (z = 0).
+TopoDS_Face sheetWithPolygonHole(const std::vector<gp_Pnt>& pts) {
+  BRepBuilderAPI_MakeFace base(gp_Pln(), -10, 10, -10, 10);
+  std::vector<TopoDS_Vertex> v;
+  for (const auto& p : pts) v.push_back(BRepBuilderAPI_MakeVertex(p).Vertex());
   BRepBuilderAPI_MakeWire w;
-  w.Add(BRepBuilderAPI_MakeEdge(a, b));
-  w.Add(BRepBuilderAPI_MakeEdge(b, c));
-  w.Add(BRepBuilderAPI_MakeEdge(c, d));
-  w.Add(BRepBuilderAPI_MakeEdge(d, a));
+  for (size_t i = 0; i < v.size(); ++i) w.Add(BRepBuilderAPI_MakeEdge(v[i], v[(i + 1) % v.size()]));
   BRepBuilderAPI_MakeFace mf(base.Face());
   mf.Add(w.Wire());
-  const HoleFillResult r = fillHole(mf.Face(), 0);
+  return mf.Face();
+}
+}  // namespace
+
+TEST(HoleFill, SelfIntersectingLoopFailsAtParameterize) {
+  // A figure-of-eight inner loop: its plane projection folds.
+  const HoleFillResult r = fillHole(sheetWithPolygonHole({{-4, -4, 0}, {4, 4, 0}, {4, -4, 0}, {-4, 4, 0}}), 0);
   EXPECT_EQ(r.status, FillStatus::Failed);
   EXPECT_EQ(r.failedStage, FillStage::Parameterize);
   EXPECT_NE(r.message.find("self-intersecting"), std::string::npos) << r.message << " " << toJson(r);
@@ -123,16 +126,7 @@ TEST(HoleFill, SelfIntersectingLoopFailsAtParameterize) {
 
 TEST(HoleFill, TwoEdgeDegenerateLoopFailsClearly) {
   // Two coincident edges forming a slit: a loop without area.
-  gp_Pln pln;
-  BRepBuilderAPI_MakeFace base(pln, -10, 10, -10, 10);
-  const TopoDS_Vertex a = BRepBuilderAPI_MakeVertex(gp_Pnt(-3, 0, 0)).Vertex();
-  const TopoDS_Vertex b = BRepBuilderAPI_MakeVertex(gp_Pnt(3, 0, 0)).Vertex();
-  BRepBuilderAPI_MakeWire w;
-  w.Add(BRepBuilderAPI_MakeEdge(a, b));
-  w.Add(BRepBuilderAPI_MakeEdge(b, a));
-  BRepBuilderAPI_MakeFace mf(base.Face());
-  mf.Add(w.Wire());
-  const HoleFillResult r = fillHole(mf.Face(), 0);
+  const HoleFillResult r = fillHole(sheetWithPolygonHole({{-3, 0, 0}, {3, 0, 0}}), 0);
   EXPECT_EQ(r.status, FillStatus::Failed);
   EXPECT_EQ(r.failedStage, FillStage::Parameterize);
   EXPECT_FALSE(r.message.empty());
