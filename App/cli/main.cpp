@@ -22,7 +22,6 @@
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
-#include "learn/learn_backend.h"
 
 using namespace holefill;
 
@@ -183,7 +182,7 @@ int main(int argc, char** argv) {
   Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
   try {
     if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
-      std::printf("holefill 0.1.0; learn backend: %s\n", learn::backendInfo().c_str());
+      std::printf("holefill 0.1.0\n");
       return 0;
     }
     if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {

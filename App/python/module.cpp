@@ -16,7 +16,6 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
-#include "learn/learn_backend.h"
 
 namespace py = pybind11;
 using namespace holefill;
@@ -115,6 +114,5 @@ PYBIND11_MODULE(HoleFillApp, m) {
     return guarded([&] { return py::bytes(shapeToBrepString(samples::ccExtraordinaryHole(valence, rings, bend, 10.0, jitter, seed))); });
   }, py::arg("valence"), py::arg("rings") = 4, py::arg("bend") = 1.0, py::arg("jitter") = 0.0, py::arg("seed") = 0u,
      "BREP of a Catmull-Clark extraordinary-point hole ring (bicubic patches around a valence-N hole).");
-  m.def("backendInfo", &learn::backendInfo);
   m.attr("__version__") = "0.1.0";
 }
