@@ -3,11 +3,7 @@
 # HoleFill NP/MVC vs FreeCAD Surface Filling (GeomPlate) on the same holes, in one run.
 # Prints the table; results in bench-out/. Paste the printed table into docs/benchmarks.md.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-cd "$root"
-./scripts/setup.sh
-./scripts/build.sh
-build=${HOLEFILL_BUILD_DIR:-$root/build}
+. "$(dirname "$0")/prepare.sh"
 export BENCH_OUT="$root/bench-out"
 mkdir -p "$BENCH_OUT"
 (

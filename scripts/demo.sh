@@ -4,14 +4,10 @@
 # the filled models (.FCStd, .step), a continuity report per hole (.json + the printed
 # table) and a picture of each result (.png, rendered by FreeCAD under Xvfb).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-cd "$root"
-./scripts/setup.sh
-./scripts/build.sh
+. "$(dirname "$0")/prepare.sh"
 ./scripts/install.sh
 out="$root/demo-out"
 rm -rf "$out" && mkdir -p "$out"
-build=${HOLEFILL_BUILD_DIR:-$root/build}
 # Headless job in a throwaway FreeCAD home (the user's own settings stay untouched).
 (
   . tests/fcenv.sh "$build/Mod/HoleFill"

@@ -2,10 +2,6 @@
 # The whole test suite on a fresh Debian 12 machine: install what is missing, build,
 # then run everything through ctest: GoogleTest (core), CLI, headless FreeCAD and GUI tests.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-cd "$root"
-./scripts/setup.sh
-./scripts/build.sh
-build=${HOLEFILL_BUILD_DIR:-$root/build}
+. "$(dirname "$0")/prepare.sh"
 cd "$build"
 ctest --output-on-failure --timeout 900 "$@"

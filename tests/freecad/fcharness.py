@@ -1,11 +1,13 @@
 """Minimal runner for headless FreeCAD tests: runs every test_* function of a module,
 prints one line per test and 'N passed, N failed', writes {"ok": ...} to $HF_RESULT
 and leaves with os._exit (freecadcmd's own exit status is not reliable)."""
-import json
 import os
 import sys
 import time
 import traceback
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/: fc_exit
+import fc_exit  # noqa: E402
 
 
 def run(namespace):
@@ -22,15 +24,5 @@ def run(namespace):
             print("FAIL %s\n%s" % (name, traceback.format_exc()))
     print("%d passed, %d failed" % (passed, len(failed)))
     sys.stdout.flush()
-    path = os.environ.get("HF_RESULT")
-    if path:
-        with open(path, "w") as f:
-            json.dump({"ok": not failed and passed > 0, "passed": passed, "failed": failed}, f)
-    try:
-        import FreeCAD
-        for d in list(FreeCAD.listDocuments()):
-            FreeCAD.closeDocument(d)
-    except Exception:
-        pass
-    sys.stdout.flush()
-    os._exit(0 if not failed else 1)
+    fc_exit.write_result_and_exit({"ok": not failed and passed > 0, "passed": passed, "failed": failed},
+                                  0 if not failed else 1)

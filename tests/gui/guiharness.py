@@ -7,6 +7,9 @@ import sys
 import time
 import traceback
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # tests/: fc_exit
+import fc_exit  # noqa: E402
+
 T0 = time.time()
 
 
@@ -31,18 +34,7 @@ def shot(name):
 def finish(ok, **info):
     info["ok"] = bool(ok)
     log("RESULT %s %s" % ("PASS" if ok else "FAIL", json.dumps(info, default=str)[:1500]))
-    path = os.environ.get("HF_RESULT")
-    if path:
-        with open(path, "w") as f:
-            json.dump(info, f, default=str)
-    try:
-        import FreeCAD
-        for d in list(FreeCAD.listDocuments()):
-            FreeCAD.closeDocument(d)
-    except Exception:
-        pass
-    sys.stdout.flush()
-    os._exit(0 if ok else 2)
+    fc_exit.write_result_and_exit(info, 0 if ok else 2)
 
 
 def run(fn, delay_ms=0):
