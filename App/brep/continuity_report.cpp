@@ -13,6 +13,7 @@
 
 #include "brep/boundary_sampling.h"
 #include "geometry/error.h"
+#include "geometry/json_writer.h"
 #include "geometry/occt_bridge.h"
 #include "geometry/tolerances.h"
 
@@ -23,6 +24,19 @@ std::string ContinuityReport::achieved(double t0, double t1, double t2) const {
   if (!(g1 <= t1)) return "G0";
   if (!(g2 <= t2)) return "G1";
   return "G2";
+}
+
+void writeJsonFields(JsonWriter& j, const ContinuityReport& r) {
+  j.field("scale", r.scale).field("samples", r.samples);
+  j.field("g0", r.g0).field("g0_relative", r.g0Relative).field("g1", r.g1).field("g2", r.g2);
+  j.key("str").beginObject();
+  j.field("g0_strict", r.g0Strict).field("g0_loose", r.g0Loose).field("g1_strict", r.g1Strict);
+  j.field("g1_loose", r.g1Loose).field("g2", r.g2Ok);
+  j.endObject();
+  j.key("per_edge").beginArray();
+  for (const auto& e : r.edges)
+    j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2).endObject();
+  j.endArray();
 }
 
 ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, const ContinuityOptions& opt) {

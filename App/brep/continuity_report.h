@@ -36,6 +36,10 @@ struct ContinuityOptions {
   int samplesPerEdge = 50;   // per edge of the filling face
 };
 
+class JsonWriter;
+// Writes the report's fields (scale, samples, g0, g0_relative, g1, g2, str, per_edge) into an open object.
+void writeJsonFields(JsonWriter& j, const ContinuityReport& r);
+
 // `hole` is a hole of `model` (by detectHoles); `face` may or may not share its edges.
 ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, const ContinuityOptions& options = {});
 

@@ -83,8 +83,7 @@ SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face) {
   // The faces connected to the new face through shared edges form its shell.
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(model, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
-  TopTools_IndexedMapOfShape faces, inShell;
-  TopExp::MapShapes(model, TopAbs_FACE, faces);
+  TopTools_IndexedMapOfShape inShell;
   std::vector<TopoDS_Shape> queue;
   for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
     if (edgeFaces.Contains(ex.Current()))

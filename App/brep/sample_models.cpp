@@ -30,6 +30,7 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <random>
 
@@ -284,21 +285,33 @@ TopoDS_Shape nonManifoldFin() {
   return c;
 }
 
+namespace {
+// Every named sample, built only when asked for; the first three are the demo's.
+const std::vector<std::pair<std::string, std::function<TopoDS_Shape()>>>& registry() {
+  static const std::vector<std::pair<std::string, std::function<TopoDS_Shape()>>> r = {
+      {"cc_valence5", [] { return ccExtraordinaryHole(5); }},
+      {"filleted_box_corner", [] { return filletedBoxCorner(); }},
+      {"panel_6_sided", [] { return panelWithHole(6, 11); }},
+      {"box_minus_face", boxMinusFace},
+      {"bezier_patch_with_hole", bezierPatchWithHole},
+      {"sheet_two_holes", sheetWithTwoHoles},
+      {"open_cylinder", openCylinder},
+      {"non_manifold_fin", nonManifoldFin},
+      {"closed_box", [] { return BRepPrimAPI_MakeBox(30, 20, 10).Shape(); }}};
+  return r;
+}
+constexpr size_t kDemoSamples = 3;
+}  // namespace
+
 std::vector<NamedSample> demoSamples() {
-  return {{"cc_valence5", ccExtraordinaryHole(5)},
-          {"filleted_box_corner", filletedBoxCorner()},
-          {"panel_6_sided", panelWithHole(6, 11)}};
+  std::vector<NamedSample> d;
+  for (size_t i = 0; i < kDemoSamples; ++i) d.push_back({registry()[i].first, registry()[i].second()});
+  return d;
 }
 
 TopoDS_Shape byName(const std::string& name) {
-  for (const auto& s : demoSamples())
-    if (s.name == name) return s.shape;
-  if (name == "box_minus_face") return boxMinusFace();
-  if (name == "bezier_patch_with_hole") return bezierPatchWithHole();
-  if (name == "sheet_two_holes") return sheetWithTwoHoles();
-  if (name == "open_cylinder") return openCylinder();
-  if (name == "non_manifold_fin") return nonManifoldFin();
-  if (name == "closed_box") return BRepPrimAPI_MakeBox(30, 20, 10).Shape();
+  for (const auto& [n, make] : registry())
+    if (n == name) return make();
   if (name.rfind("cc_valence", 0) == 0 && name.size() > 10 && name.find_first_not_of("0123456789", 10) == std::string::npos)
     return ccExtraordinaryHole(std::stoi(name.substr(10)));
   throw Error("unknown sample '" + name + "'");
@@ -306,9 +319,7 @@ TopoDS_Shape byName(const std::string& name) {
 
 std::vector<std::string> names() {
   std::vector<std::string> n;
-  for (const auto& s : demoSamples()) n.push_back(s.name);
-  for (const char* x : {"box_minus_face", "bezier_patch_with_hole", "sheet_two_holes", "open_cylinder", "non_manifold_fin", "closed_box"})
-    n.push_back(x);
+  for (const auto& entry : registry()) n.push_back(entry.first);
   return n;
 }
 

@@ -141,7 +141,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
       if (density == 1)
         for (const auto& w : P.warnings) r.warnings.push_back(w);
-      r.methodName = toString(opt.method) == toString(P.chosen) ? r.methodName : toString(opt.method) + ":" + toString(P.chosen);
+      if (P.chosen != opt.method) r.methodName = toString(opt.method) + ":" + toString(P.chosen);
       r.timings.parameterize += since(t);
       if (!progress(0.1)) return cancelled();
 
@@ -277,17 +277,8 @@ std::string toJson(const HoleFillResult& r) {
   j.field("method", r.methodName).field("requested", r.requested).field("achieved", r.achieved);
   j.field("hole", r.holeIndex + 1).field("corners", r.hole.corners).field("edges", r.hole.edgeIndices());
   j.field("faulty_edges", r.faultyEdges);
-  j.field("scale", r.report.scale).field("samples", r.report.samples);
-  j.field("g0", r.report.g0).field("g0_relative", r.report.g0Relative).field("g1", r.report.g1).field("g2", r.report.g2);
+  writeJsonFields(j, r.report);
   j.field("g0_tolerance", r.g0Tolerance);
-  j.key("str").beginObject();
-  j.field("g0_strict", r.report.g0Strict).field("g0_loose", r.report.g0Loose).field("g1_strict", r.report.g1Strict);
-  j.field("g1_loose", r.report.g1Loose).field("g2", r.report.g2Ok);
-  j.endObject();
-  j.key("per_edge").beginArray();
-  for (const auto& e : r.report.edges)
-    j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2).endObject();
-  j.endArray();
   j.field("face_valid", r.faceValid).field("shape_valid", r.shapeValid).field("closed_solid", r.closedSolid);
   j.field("volume", r.volume).field("poles_u", r.polesU).field("poles_v", r.polesV).field("refinements", r.refinements);
   j.field("boundary_samples", r.samples);

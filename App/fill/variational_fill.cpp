@@ -294,7 +294,6 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     }
     const size_t fixedRows = sys.rows.size();
     Eigen::VectorXd x;
-    BSplineSurface surf;
     const int curvatureRounds = o.continuity == Continuity::G2 ? o.curvatureIterations + 1 : 1;
     for (int cr = 0; cr < curvatureRounds; ++cr) {
       sys.rows.resize(fixedRows);
@@ -337,14 +336,13 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
           if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
       }
       x = levelX;
-      surf = toSurface(U, V, x);
       if (std::getenv("HOLEFILL_DEBUG"))
         std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu; assemble %.3fs, %d rounds %.3fs\n",
                      level, sys.nu, sys.nv, cr, levelBest.g0, levelBest.g1, levelBest.g2, levelBest.violating.size(), tAssemble,
                      iterations, std::chrono::duration<double>(std::chrono::steady_clock::now() - ti).count());
       if (!haveBest || better(levelBest, bestErr, o) || levelBest.violating.empty()) {
         bestErr = levelBest;
-        res.surface = surf;
+        res.surface = toSurface(U, V, x);
         haveBest = true;
       }
     }

@@ -65,14 +65,9 @@ std::string report(const std::string& faceBrep, const std::string& modelBrep, co
     const Hole& hole = holeContainingEdges(detection, edges);
     const ContinuityReport r = continuityReport(f, hole);
     JsonWriter j;
-    j.beginObject().field("samples", r.samples).field("scale", r.scale).field("g0", r.g0).field("g0_relative", r.g0Relative);
-    j.field("g1", r.g1).field("g2", r.g2);
-    j.key("str").beginObject().field("g0_strict", r.g0Strict).field("g0_loose", r.g0Loose).field("g1_strict", r.g1Strict);
-    j.field("g1_loose", r.g1Loose).field("g2", r.g2Ok).endObject();
-    j.key("per_edge").beginArray();
-    for (const auto& e : r.edges)
-      j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2).endObject();
-    j.endArray().endObject();
+    j.beginObject();
+    writeJsonFields(j, r);
+    j.endObject();
     return j.str();
   });
 }

@@ -24,6 +24,17 @@ def button(mw, which):
     return None
 
 
+def press(mw, which, ms=600):
+    """Click the task panel's OK or Cancel button, as a user would, and let the GUI react."""
+    button(mw, which).click()
+    h.pump(ms)
+
+
+def open_panel():
+    FreeCADGui.runCommand("HoleFill_FillHole")
+    h.pump(600)
+
+
 def body():
     import HoleFill
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
@@ -39,40 +50,32 @@ def body():
 
     # 1. Nothing selected: the panel asks for an edge; OK does not create anything.
     FreeCADGui.Selection.clearSelection()
-    FreeCADGui.runCommand("HoleFill_FillHole")
-    h.pump(600)
+    open_panel()
     assert "Select one edge of a hole" in visible_texts(mw), visible_texts(mw)
-    button(mw, QtWidgets.QDialogButtonBox.Ok).click()
-    h.pump(600)
+    press(mw, QtWidgets.QDialogButtonBox.Ok)
     assert "No hole selected" in visible_texts(mw), visible_texts(mw)
     assert sorted(o.Name for o in doc.Objects) == names
-    button(mw, QtWidgets.QDialogButtonBox.Cancel).click()
-    h.pump(600)
+    press(mw, QtWidgets.QDialogButtonBox.Cancel)
 
     # 2. An edge of a closed box: not on any hole.
     FreeCADGui.Selection.addSelection(doc.Name, "Box", "Edge1")
-    FreeCADGui.runCommand("HoleFill_FillHole")
-    h.pump(600)
+    open_panel()
     assert "is not on one hole loop" in visible_texts(mw), visible_texts(mw)
-    button(mw, QtWidgets.QDialogButtonBox.Ok).click()
-    h.pump(1500)
+    press(mw, QtWidgets.QDialogButtonBox.Ok, 1500)
     assert "Fill failed" in visible_texts(mw), visible_texts(mw)
     view = FreeCADGui.ActiveDocument.ActiveView
     view.fitAll()
     h.pump(300)
     QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_bad_1_not_a_hole.png"))
-    button(mw, QtWidgets.QDialogButtonBox.Cancel).click()
-    h.pump(800)
+    press(mw, QtWidgets.QDialogButtonBox.Cancel, 800)
     assert sorted(o.Name for o in doc.Objects) == names, sorted(o.Name for o in doc.Objects)
 
     # 3. A face selected (no edge): treated as nothing selected.
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(doc.Name, "Panel", "Face1")
-    FreeCADGui.runCommand("HoleFill_FillHole")
-    h.pump(600)
+    open_panel()
     assert "Select one edge of a hole" in visible_texts(mw), visible_texts(mw)
-    button(mw, QtWidgets.QDialogButtonBox.Cancel).click()
-    h.pump(600)
+    press(mw, QtWidgets.QDialogButtonBox.Cancel)
     assert sorted(o.Name for o in doc.Objects) == names
     assert panel.Shape.isValid() and len(panel.Shape.Faces) == 1
     h.finish(True)
