@@ -8,6 +8,8 @@ PKGS=(
   libocct-data-exchange-dev libocct-ocaf-dev occt-misc
   libtbb-dev libeigen3-dev libtorch-dev libgtest-dev pybind11-dev python3-dev python3-numpy
   freecad xvfb xdotool imagemagick python3-pyside2.qttest x11-utils bc
+  # libtorch calls the system BLAS: OpenBLAS instead of the reference BLAS makes UVTran 5-10x faster.
+  libopenblas0-pthread python3-matplotlib
 )
 missing=()
 for p in "${PKGS[@]}"; do

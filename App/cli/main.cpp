@@ -22,6 +22,7 @@
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
+#include "learn/learn_library.h"
 
 using namespace holefill;
 
@@ -31,9 +32,12 @@ const char* kUsage =
     "usage:\n"
     "  holefill holes FILE [--all] [--json]\n"
     "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...]\n"
-    "                [--face-out FACE.brep] [--method auto|np|mvc|support] [--continuity G0|G1|G2]\n"
+    "                [--face-out FACE.brep] [--method auto|np|mvc|uvtran|support] [--continuity G0|G1|G2]\n"
     "                [--tolerance T] [--angular-tolerance RAD] [--json]\n"
     "  holefill samples DIR        write the bundled sample models as .brep\n"
+    "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
+    "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
+    "  holefill eval uvtran [--weights W] [--samples N] [--split test|validation]\n"
     "  holefill --version\n";
 
 struct Args {
@@ -189,6 +193,8 @@ int main(int argc, char** argv) {
       std::printf("%s", kUsage);
       return 0;
     }
+    if (argc >= 2 && (std::string(argv[1]) == "train" || std::string(argv[1]) == "eval"))
+      return learn::learnLibrary().main(argc - 1, argv + 1);  // loads libtorch only for these verbs
     const Args a = parse(argc, argv);
     if (a.verb == "holes") return cmdHoles(a);
     if (a.verb == "fill") return cmdFill(a);

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <string>
 
-#include "learn/learn_backend.h"
+#include "learn/torch/learn_backend.h"
 
 int main() {
   const std::string info = holefill::learn::backendInfo();

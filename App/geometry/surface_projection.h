@@ -1,0 +1,30 @@
+// Orthogonal projection of an ordered point sequence onto a B-spline surface (The NURBS Book
+// Sec. 6.1, point inversion by Newton's method): each point starts from its predecessor's
+// parameters, so a projected loop stays continuous along its parameter and never jumps to a far
+// sheet of the surface; a coarse grid search seeds the first point and any point whose Newton
+// run fails to improve on its seed. Parameters stay in the surface's domain.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "geometry/bspline_surface.h"
+
+namespace holefill {
+
+struct ProjectionOptions {
+  int gridCells = 24;       // per direction, for seeding
+  int maxIterations = 20;
+  double tolerance = 1e-12;  // on the squared parameter step
+};
+
+struct ProjectionResult {
+  std::vector<Eigen::Vector2d> uv;
+  std::vector<double> distance;  // |S(uv) - p|
+  int gridSearches = 0;
+};
+
+ProjectionResult projectSequence(const BSplineSurface& s, const std::vector<Eigen::Vector3d>& points,
+                                 const ProjectionOptions& options = {});
+
+}  // namespace holefill

@@ -1,0 +1,85 @@
+#include "learn/learn_library.h"
+
+#include <dlfcn.h>
+#include <sys/stat.h>
+
+#include <mutex>
+#include <vector>
+
+#include "geometry/error.h"
+
+namespace holefill::learn {
+
+namespace {
+
+bool exists(const std::string& p) {
+  struct stat st;
+  return !p.empty() && ::stat(p.c_str(), &st) == 0;
+}
+
+std::string dirOf(const std::string& p) {
+  const auto k = p.find_last_of('/');
+  return k == std::string::npos ? "." : p.substr(0, k);
+}
+
+std::string thisModuleDir() {
+  Dl_info info;
+  if (dladdr(reinterpret_cast<void*>(&learnLibrary), &info) && info.dli_fname) return dirOf(info.dli_fname);
+  return ".";
+}
+
+std::vector<std::string> candidates() {
+  std::vector<std::string> c;
+  if (const char* e = std::getenv("HOLEFILL_LEARN_LIBRARY")) c.push_back(e);
+  const std::string here = thisModuleDir();
+  c.push_back(here + "/libholefill_learn.so");
+#ifdef HOLEFILL_BUILD_LEARN_LIBRARY
+  c.push_back(HOLEFILL_BUILD_LEARN_LIBRARY);
+#endif
+  return c;
+}
+
+}  // namespace
+
+const LearnLibrary& learnLibrary() {
+  static std::mutex m;
+  static LearnLibrary lib;
+  static std::string failure;
+  std::lock_guard<std::mutex> lock(m);
+  if (lib.predict) return lib;
+  if (!failure.empty()) throw Error(failure);
+  std::string tried;
+  for (const auto& path : candidates()) {
+    if (!exists(path)) { tried += " " + path + " (missing);"; continue; }
+    void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!h) { tried += " " + path + " (" + dlerror() + ");"; continue; }
+    LearnLibrary l;
+    l.path = path;
+    l.predict = reinterpret_cast<HoleFillUvtranPredictFn>(dlsym(h, "holefill_uvtran_predict"));
+    l.main = reinterpret_cast<HoleFillLearnMainFn>(dlsym(h, "holefill_learn_main"));
+    l.info = reinterpret_cast<HoleFillLearnInfoFn>(dlsym(h, "holefill_learn_info"));
+    if (!l.predict || !l.main || !l.info) { tried += " " + path + " (entry points missing);"; continue; }
+    lib = l;
+    return lib;
+  }
+  failure = "the learned-model library could not be loaded:" + tried;
+  throw Error(failure);
+}
+
+std::string defaultUvtranWeights() {
+  if (const char* e = std::getenv("HOLEFILL_UVTRAN_WEIGHTS")) return e;
+  std::vector<std::string> c;
+  try {
+    c.push_back(dirOf(learnLibrary().path) + "/Resources/models/uvtran.pt");
+  } catch (const Error&) {
+  }
+  c.push_back(thisModuleDir() + "/Resources/models/uvtran.pt");
+#ifdef HOLEFILL_SOURCE_DIR
+  c.push_back(std::string(HOLEFILL_SOURCE_DIR) + "/Resources/models/uvtran.pt");
+#endif
+  for (const auto& p : c)
+    if (exists(p)) return p;
+  return "";
+}
+
+}  // namespace holefill::learn
