@@ -49,8 +49,12 @@ class FillTaskPanel:
         self.method = QtWidgets.QComboBox()
         self.method.addItems(list(HoleFill.METHODS))
         self.method.setToolTip("auto: np or mvc, whichever distorts the boundary less;\n"
-                               "np: nearest plane projection; mvc: regular N-gon with mean value mapping")
+                               "np: nearest plane projection; mvc: regular N-gon with mean value mapping;\n"
+                               "uvtran: learned projection surface (falls back to mvc, and says so, if it cannot)")
         lay.addRow("Parameterization:", self.method)
+        self.showProjection = QtWidgets.QCheckBox("Show UVTran projection surface")
+        self.showProjection.setToolTip("Overlay the surface UVTran predicts for this hole (view only)")
+        lay.addRow(self.showProjection)
         self.continuity = QtWidgets.QComboBox()
         self.continuity.addItems(["G0", "G1", "G2"])
         self.continuity.setCurrentText("G1")
@@ -71,6 +75,7 @@ class FillTaskPanel:
         lay.addRow(self.report)
         self.useSel.clicked.connect(self.takeSelection)
         self.preview.clicked.connect(self.runPreview)
+        self.showProjection.toggled.connect(self.updateProjection)
 
         self.source, self.edges = None, []
         self.created = False
@@ -92,6 +97,8 @@ class FillTaskPanel:
         if src is not None:
             self.source, self.edges = src, edges
         self.showHole()
+        if hasattr(self, "showProjection") and self.showProjection.isChecked():
+            self.updateProjection()
 
     def showHole(self):
         if self.source is None:
@@ -109,6 +116,18 @@ class FillTaskPanel:
         else:
             self.holeLabel.setText("%s: %d-sided hole, %d edges (%s)" % (
                 self.source.Label, hole["corners"], len(hole["edges"]), ", ".join(hole["edges"])))
+
+    def updateProjection(self, *args):
+        from HoleFillGui import projection_overlay
+        projection_overlay.hide()
+        if not self.showProjection.isChecked() or self.source is None:
+            return
+        try:
+            face = HoleFill.projectionSurface(self.source.Shape, self.edges)
+        except HoleFill.HoleFillError as e:
+            self.report.setPlainText("No projection surface: %s" % e)
+            return
+        projection_overlay.show(face)
 
     def runPreview(self):
         if self.source is None:
@@ -154,10 +173,14 @@ class FillTaskPanel:
             if not self.runPreview():
                 return False  # keep the panel open: the report says what went wrong
         self.doc.commitTransaction()
+        from HoleFillGui import projection_overlay
+        projection_overlay.hide()
         FreeCADGui.Control.closeDialog()
         return True
 
     def reject(self):
+        from HoleFillGui import projection_overlay
+        projection_overlay.hide()
         name = self.obj.Name if (self.obj is not None and self.created) else None
         self.doc.abortTransaction()
         if name and self.doc.getObject(name) is not None:  # undo disabled: remove the preview by hand

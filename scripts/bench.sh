@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# Peer benchmarks (not part of ctest): builds, then runs tests/bench/bench_fill.py in freecadcmd,
-# HoleFill NP/MVC vs FreeCAD Surface Filling (GeomPlate) on the same holes, in one run.
-# Prints the table; results in bench-out/. Paste the printed table into docs/benchmarks.md.
+# Peer benchmarks (not part of ctest): builds, then runs
+#  1. holefill_bench_params: parameter error of UVTran vs MVC vs NP on the synthetic test split;
+#  2. tests/bench/bench_fill.py in freecadcmd: HoleFill NP/MVC/UVTran/auto vs FreeCAD Surface
+#     Filling (GeomPlate) on the same holes, asked for G1 and for G2, in one run.
+# Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
+# BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
 . "$(dirname "$0")/prepare.sh"
 export BENCH_OUT="$root/bench-out"
 mkdir -p "$BENCH_OUT"
+"$build/tests/holefill_bench_params" "${BENCH_PARAM_HOLES:-1000}" | tee "$BENCH_OUT/bench_params.md"
+echo
 (
   . tests/fcenv.sh "$build/Mod/HoleFill"
   freecadcmd tests/bench/bench_fill.py 2>&1 | grep -v '^ *#\|^$\|Juergen\|licensed\|wouldn.t be possible\|Libs:\|Recompute\|(100 %)\|(50 %)'

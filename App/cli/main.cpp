@@ -33,7 +33,7 @@ const char* kUsage =
     "  holefill holes FILE [--all] [--json]\n"
     "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...]\n"
     "                [--face-out FACE.brep] [--method auto|np|mvc|uvtran|support] [--continuity G0|G1|G2]\n"
-    "                [--tolerance T] [--angular-tolerance RAD] [--json]\n"
+    "                [--tolerance T] [--angular-tolerance RAD] [--weights UVTRAN.pt] [--json]\n"
     "  holefill samples DIR        write the bundled sample models as .brep\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
@@ -123,6 +123,7 @@ int cmdFill(const Args& a) {
   if (!a.has("--out")) throw Error("fill: --out OUT is required");
   HoleFillOptions o;
   o.method = paramMethodFromString(a.get("--method", "auto"));
+  o.parameterization.uvtranWeights = a.get("--weights", "");
   o.continuity = continuityFromString(a.get("--continuity", "G1"));
   if (a.has("--tolerance")) o.tolerance = number(a.get("--tolerance"), "--tolerance");
   if (a.has("--angular-tolerance")) o.angularTolerance = number(a.get("--angular-tolerance"), "--angular-tolerance");

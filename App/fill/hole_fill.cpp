@@ -1,5 +1,7 @@
 #include "fill/hole_fill.h"
 
+#include "learn/uvtran.h"
+
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
@@ -142,6 +144,11 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       if (density == 1)
         for (const auto& w : P.warnings) r.warnings.push_back(w);
       if (P.chosen != opt.method) r.methodName = toString(opt.method) + ":" + toString(P.chosen);
+      if (P.chosen == ParamMethod::Uvtran) {
+        r.projectionSurface = P.projectionSurface;
+        for (int i = 0; i < r.projectionSurface.poles.rows(); ++i)
+          r.projectionSurface.poles.row(i) = (centre + scale * P.projectionSurface.poles.row(i).transpose()).transpose();
+      }
       r.timings.parameterize += since(t);
       if (!progress(0.1)) return cancelled();
 
@@ -242,6 +249,17 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
   r.timings.total = since(t0);
   progress(1.0);
   return r;
+}
+
+BSplineSurface uvtranProjectionSurface(const TopoDS_Shape& model, const std::vector<int>& holeEdges,
+                                       const HoleFillOptions& opt) {
+  if (model.IsNull()) throw Error("the shape is empty");
+  const Hole hole = holeContainingEdges(detectHoles(model, opt.detection), holeEdges);
+  std::vector<Eigen::Vector3d> loop;
+  for (const auto& s : sampleBoundary(hole, opt.sampling)) loop.push_back(s.point);
+  learn::UvtranOptions uo;
+  uo.weights = opt.parameterization.uvtranWeights;
+  return learn::predictUvtran(loop, uo).surface;
 }
 
 namespace {

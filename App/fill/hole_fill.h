@@ -65,13 +65,19 @@ struct HoleFillResult {
   int polesU = 0, polesV = 0, refinements = 0, samples = 0;
   std::vector<std::string> warnings;
   FillTimings timings;
-  std::string methodName;
+  std::string methodName;           // "uvtran:mvc" when a request fell back
+  BSplineSurface projectionSurface; // UVTran's predicted projection surface (model units), when it was used
 };
 
 // The hole is the loop holding all the given 1-based edge indices (FreeCAD "Edge<k>").
 HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& options = {});
 // The hole by 0-based index in detectHoles(model).holes.
 HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& options = {});
+
+// UVTran's projection surface for the hole holding the given edges, in model units (what the
+// "uvtran" method projects the boundary onto), for display. Throws when it cannot be predicted.
+BSplineSurface uvtranProjectionSurface(const TopoDS_Shape& model, const std::vector<int>& holeEdges,
+                                       const HoleFillOptions& options = {});
 
 std::string toJson(const HoleFillResult& r);
 std::string toJson(const HoleDetectionResult& r);

@@ -10,6 +10,7 @@
 #include "geometry/bspline_surface.h"
 #include "geometry/error.h"
 #include "geometry/polygon2d.h"
+#include "learn/uvtran.h"
 
 namespace holefill {
 
@@ -18,7 +19,8 @@ ParamMethod paramMethodFromString(const std::string& s) {
   if (s == "mvc" || s == "MVC" || s == "polygon") return ParamMethod::MeanValue;
   if (s == "auto") return ParamMethod::Auto;
   if (s == "support" || s == "exact") return ParamMethod::Support;
-  throw Error("unknown parameterization method '" + s + "': use np, mvc, auto or support");
+  if (s == "uvtran" || s == "UVTran") return ParamMethod::Uvtran;
+  throw Error("unknown parameterization method '" + s + "': use np, mvc, auto, uvtran or support");
 }
 
 std::string toString(ParamMethod m) {
@@ -27,6 +29,7 @@ std::string toString(ParamMethod m) {
     case ParamMethod::MeanValue: return "mvc";
     case ParamMethod::Auto: return "auto";
     case ParamMethod::Support: return "support";
+    case ParamMethod::Uvtran: return "uvtran";
   }
   return "?";
 }
@@ -119,6 +122,39 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
     }
 }
 
+void interiorReferences(const BSplineSurface& surf, const ParameterizationOptions& opt, Parameterization& P) {
+  Polygon2 poly;
+  const int stride = std::max<int>(1, static_cast<int>(P.uv.size()) / 256);
+  for (size_t i = 0; i < P.uv.size(); i += stride) poly.push_back(P.uv[i]);
+  Eigen::AlignedBox2d box;
+  for (const auto& q : P.uv) box.extend(q);
+  const int G = opt.interiorReferenceGrid;
+  for (int i = 1; i < G; ++i)
+    for (int j = 1; j < G; ++j) {
+      const Eigen::Vector2d x = box.min() + Eigen::Vector2d(box.sizes().x() * i / G, box.sizes().y() * j / G);
+      if (!contains(poly, x)) continue;
+      P.interiorUV.push_back(x);
+      P.interiorXYZ.push_back(surf.point(x.x(), x.y()));
+    }
+}
+
+void uvtran(const std::vector<BoundarySample>& s, const ParameterizationOptions& opt, Parameterization& P) {
+  std::vector<Eigen::Vector3d> loop;
+  for (const auto& x : s) loop.push_back(x.point);
+  learn::UvtranOptions uo;
+  uo.weights = opt.uvtranWeights;
+  const learn::UvtranPrediction pred = learn::predictUvtran(loop, uo);
+  Eigen::AlignedBox3d box;
+  for (const auto& p : loop) box.extend(p);
+  if (pred.maxDistance > opt.uvtranMaxDistance * box.diagonal().norm())
+    throw Error("the predicted projection surface lies " + std::to_string(pred.maxDistance / box.diagonal().norm()) +
+                " boundary diagonals from the boundary");
+  P.uv = pred.uv;
+  P.projectionSurface = pred.surface;
+  P.seconds = pred.seconds;
+  interiorReferences(pred.surface, opt, P);
+}
+
 void support(const Hole& hole, const std::vector<BoundarySample>& s, Parameterization& P) {
   const TopoDS_Face& f = hole.edges[0].support;
   for (const auto& e : hole.edges)
@@ -140,6 +176,39 @@ void support(const Hole& hole, const std::vector<BoundarySample>& s, Parameteriz
   }
   if (!std::isfinite(P.u0) || !std::isfinite(P.u1) || !std::isfinite(P.v0) || !std::isfinite(P.v1)) {
     P.u0 = P.v0 = 1e300; P.u1 = P.v1 = -1e300;  // unbounded surface: recomputed from the pcurve below
+  }
+}
+
+// Common to all methods: reject folds and zero area, orient counter-clockwise, set the domain.
+void finish(Parameterization& P, ParamMethod method, bool fixedDomain, const ParameterizationOptions& opt) {
+  Polygon2 poly(P.uv.begin(), P.uv.end());
+  const double area = signedArea(poly);
+  Eigen::AlignedBox2d box;
+  for (const auto& q : P.uv) box.extend(q);
+  if (selfIntersects(poly))
+    throw Error("the " + toString(method) + " parameterization folds the hole boundary (self-intersecting pcurve); "
+                "try another method");
+  if (!(std::abs(area) > 1e-12 * box.diagonal().squaredNorm()))
+    throw Error("the " + toString(method) + " parameterization maps the hole boundary onto a curve without area: "
+                "the loop is degenerate for this method");
+  if (area < 0) {  // mirror u about the domain centre: keeps the domain, reverses orientation
+    P.mirroredU = true;
+    const double c = fixedDomain ? P.u0 + P.u1 : box.min().x() + box.max().x();
+    for (auto& q : P.uv) q.x() = c - q.x();
+    for (auto& q : P.interiorUV) q.x() = c - q.x();
+    if (!P.knotsU.empty()) {
+      std::vector<double> k;
+      for (auto it = P.knotsU.rbegin(); it != P.knotsU.rend(); ++it) k.push_back(c - *it);
+      P.knotsU = k;
+    }
+    box = Eigen::AlignedBox2d();
+    for (const auto& q : P.uv) box.extend(q);
+  }
+  if (!fixedDomain) {
+    const Eigen::Vector2d ext = box.sizes();
+    const double m = opt.margin * std::max(ext.x(), ext.y());
+    P.u0 = box.min().x() - m; P.u1 = box.max().x() + m;
+    P.v0 = box.min().y() - m; P.v1 = box.max().y() + m;
   }
 }
 
@@ -178,6 +247,19 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
     mvc.warnings.push_back("auto: mvc (support normals up to " + steep + " deg from the plane's)");
     return mvc;
   }
+  if (method == ParamMethod::Uvtran) {
+    try {
+      Parameterization P;
+      P.chosen = method;
+      uvtran(samples, opt, P);
+      finish(P, method, false, opt);
+      return P;
+    } catch (const Error& e) {
+      Parameterization m = parameterize(hole, samples, ParamMethod::MeanValue, opt);
+      m.warnings.insert(m.warnings.begin(), std::string("uvtran failed, fell back to mvc: ") + e.what());
+      return m;
+    }
+  }
   Parameterization P;
   P.chosen = method;
   bool fixedDomain = false;
@@ -185,37 +267,9 @@ Parameterization parameterize(const Hole& hole, const std::vector<BoundarySample
     case ParamMethod::NearestPlane: nearestPlane(samples, P); break;
     case ParamMethod::MeanValue: meanValue(hole, samples, opt, P); break;
     case ParamMethod::Support: support(hole, samples, P); fixedDomain = P.u0 < P.u1; break;
-    case ParamMethod::Auto: break;  // handled above
+    case ParamMethod::Auto: case ParamMethod::Uvtran: break;  // handled above
   }
-  Polygon2 poly(P.uv.begin(), P.uv.end());
-  const double area = signedArea(poly);
-  Eigen::AlignedBox2d box;
-  for (const auto& q : P.uv) box.extend(q);
-  if (selfIntersects(poly))
-    throw Error("the " + toString(method) + " parameterization folds the hole boundary (self-intersecting pcurve); "
-                "try another method");
-  if (!(std::abs(area) > 1e-12 * box.diagonal().squaredNorm()))
-    throw Error("the " + toString(method) + " parameterization maps the hole boundary onto a curve without area: "
-                "the loop is degenerate for this method");
-  if (area < 0) {  // mirror u about the domain centre: keeps the domain, reverses orientation
-    P.mirroredU = true;
-    const double c = fixedDomain ? P.u0 + P.u1 : box.min().x() + box.max().x();
-    for (auto& q : P.uv) q.x() = c - q.x();
-    for (auto& q : P.interiorUV) q.x() = c - q.x();
-    if (!P.knotsU.empty()) {
-      std::vector<double> k;
-      for (auto it = P.knotsU.rbegin(); it != P.knotsU.rend(); ++it) k.push_back(c - *it);
-      P.knotsU = k;
-    }
-    box = Eigen::AlignedBox2d();
-    for (const auto& q : P.uv) box.extend(q);
-  }
-  if (!fixedDomain) {
-    const Eigen::Vector2d ext = box.sizes();
-    const double m = opt.margin * std::max(ext.x(), ext.y());
-    P.u0 = box.min().x() - m; P.u1 = box.max().x() + m;
-    P.v0 = box.min().y() - m; P.v1 = box.max().y() + m;
-  }
+  finish(P, method, fixedDomain, opt);
   return P;
 }
 

@@ -81,9 +81,9 @@ Generator drawGenerator(Rng& g, int f) {
   switch (f) {
     case 0: waveAmp = uni(g, 0.0, 0.015); break;
     case 1: waveAmp = uni(g, 0.03, 0.1); break;
-    case 2: G.bendU = sign() * uni(g, 1.0, 3.5); waveAmp = uni(g, 0, 0.03); break;
-    case 3: G.bendU = uni(g, 0.8, 2.8); G.bendV = G.bendU * uni(g, 0.5, 1.2); waveAmp = uni(g, 0, 0.03); break;
-    default: G.bendU = uni(g, 0.8, 2.8); G.bendV = -G.bendU * uni(g, 0.5, 1.2); waveAmp = uni(g, 0, 0.03); break;
+    case 2: G.bendU = sign() * uni(g, 1.0, 5.0); waveAmp = uni(g, 0, 0.03); break;
+    case 3: G.bendU = uni(g, 0.8, 3.5); G.bendV = G.bendU * uni(g, 0.5, 1.2); waveAmp = uni(g, 0, 0.03); break;
+    default: G.bendU = uni(g, 0.8, 3.5); G.bendV = -G.bendU * uni(g, 0.5, 1.2); waveAmp = uni(g, 0, 0.03); break;
   }
   if (f >= 3 && chance(g, 0.5)) G.bendU = -G.bendU, G.bendV = -G.bendV;
   const int nw = std::uniform_int_distribution<int>(1, 3)(g);
@@ -138,6 +138,12 @@ bool drawPcurve(Rng& g, int dense, double rmsRadius, Pcurve& pc, int& sides) {
       if (bump) p += bumpAmp * std::exp(-0.5 * std::pow((s - bumpAt) / 0.08, 2)) * outward;
       pc.points.push_back(p);
     }
+  }
+  // Elongated holes (a removed fillet is a long strip): stretch along a random direction.
+  if (chance(g, 0.4)) {
+    const double a = uni(g, 1.0, 2.5), dir = uni(g, 0, M_PI);
+    const Eigen::Vector2d d(std::cos(dir), std::sin(dir));
+    for (auto& p : pc.points) p += (a - 1) * p.dot(d) * d;
   }
   Polygon2 coarse;
   for (size_t i = 0; i < pc.points.size(); i += 4) coarse.push_back(pc.points[i]);

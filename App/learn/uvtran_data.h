@@ -6,7 +6,7 @@
 //    low-frequency height waves, plus the paper's structured perturbations (a boundary row or
 //    column of control points shifted) and small noise;
 //  - a closed pcurve in the unit square: 3-8 sides, straight or curved, uneven lengths,
-//    concave corners, local bumps;
+//    concave corners, local bumps, some stretched up to 2.5:1 (strips such as removed fillets);
 // and records B(t) = S(pcurve(t)) in the canonical frame (canonical_boundary.h), with the
 // ground-truth (u, v) of every boundary point and the surface's poles and knots there.
 // The task is made well posed by construction: the pcurve's centre and RMS radius are fixed in

@@ -2,6 +2,7 @@
 // shapes arrive and leave as BREP text, reports leave as JSON text (rendered
 // once, in the core), errors leave as HoleFillApp.HoleFillError. OCCT and core
 // exceptions are caught here so FreeCAD never goes down with a bad input.
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -16,6 +17,7 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "learn/learn_library.h"
 
 namespace py = pybind11;
 using namespace holefill;
@@ -99,6 +101,22 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::arg("tolerance") = 0.0, py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1,
         py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
+  m.def("uvtranSurface", [](const std::string& brep, const std::vector<int>& edges, const std::string& weights) {
+    return guarded([&] {
+      HoleFillOptions o;
+      o.parameterization.uvtranWeights = weights;
+      const BSplineSurface s = uvtranProjectionSurface(shapeFromBrepString(brep), edges, o);
+      return py::bytes(shapeToBrepString(BRepBuilderAPI_MakeFace(toOcct(s), 1e-7).Face()));
+    });
+  }, py::arg("brep"), py::arg("edges"), py::arg("weights") = "",
+     "BREP of UVTran's projection surface (a face on its whole domain) for the hole holding the given edges.");
+  m.def("learnInfo", [] {
+    try {
+      return std::string(learn::learnLibrary().info()) + " from " + learn::learnLibrary().path;
+    } catch (const Error& e) {
+      return std::string("unavailable: ") + e.what();
+    }
+  }, "The learned-model backend (loads libtorch on first call).");
   m.def("continuityReport", &report, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
         "G0/G1/G2 of a face against the hole of the model holding the given edges, as JSON.");
   m.def("sampleModel", [](const std::string& name) {

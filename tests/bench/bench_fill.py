@@ -1,5 +1,6 @@
-"""Benchmark: N-sided B-rep hole filling, HoleFill (NP, MVC) against FreeCAD's Surface Filling
-(OCCT GeomPlate, neighbouring faces as G1 supports), side by side in one run on the same holes.
+"""Benchmark: N-sided B-rep hole filling, HoleFill (NP, MVC, UVTran, auto) against FreeCAD's Surface
+Filling (OCCT GeomPlate, neighbouring faces as supports), side by side in one run on the same holes,
+each asked for G1 and then for G2 (GeomPlate: BoundaryOrder 1, then 2).
 
 Families
   cc   Catmull-Clark extraordinary-point holes, valence 3..8, bicubic patches around them
@@ -102,39 +103,40 @@ def cad_holes():
     return holes
 
 
-def run_ours(shape, hole, method, loose=False):
+def run_ours(shape, hole, method, loose=False, continuity="G1", repeats=REPEATS):
     # loose: the tolerances GeomPlate works to (G0 1e-4 x scale, G1 1e-2 rad), for time at equal quality.
     t = time.time()
     try:
         tol = dict(tolerance=1e-4 * hole["scale"], angularTolerance=1e-2) if loose else {}
-        face, rep = HoleFill.fillHole(shape, hole, method=method, continuity="G1", **tol)
+        face, rep = HoleFill.fillHole(shape, hole, method=method, continuity=continuity, **tol)
         dt = time.time() - t
         core = rep["timings"]["total"]
-        for _ in range(REPEATS - 1):
+        for _ in range(repeats - 1):
             t = time.time()
-            _, again = HoleFill.fillHole(shape, hole, method=method, continuity="G1", **tol)
+            _, again = HoleFill.fillHole(shape, hole, method=method, continuity=continuity, **tol)
             dt = min(dt, time.time() - t)
             core = min(core, again["timings"]["total"])
         rep["timings"]["total"] = core
         return {"ok": rep["face_valid"], "time": dt, "core": rep["timings"]["total"], "g0r": rep["g0_relative"],
                 "g1": rep["g1"], "g2": rep["g2"], "status": rep["status"], "method": rep["method"],
-                "notes": [w for w in rep["warnings"] if w.startswith("auto")]}
+                "param_s": rep["timings"]["parameterize"],
+                "notes": [w for w in rep["warnings"] if w.startswith("auto") or w.startswith("uvtran")]}
     except HoleFill.HoleFillError as e:
         return {"ok": False, "time": time.time() - t, "error": str(e)[:200]}
 
 
-def run_geomplate(doc, shape, hole):
+def run_geomplate(doc, shape, hole, order=1, repeats=REPEATS):
     src = doc.addObject("Part::Feature", "Model")
     src.Shape = shape
     doc.recompute()
     f = doc.addObject("Surface::Filling", "Filling")
     f.BoundaryEdges = [(src, e) for e in hole["edges"]]
     f.BoundaryFaces = ["Face%d" % i for i in hole["supportFaces"]]
-    f.BoundaryOrder = [1] * len(hole["edges"])
+    f.BoundaryOrder = [order] * len(hole["edges"])
     t = time.time()
     doc.recompute()
     dt = time.time() - t
-    for _ in range(REPEATS - 1):
+    for _ in range(repeats - 1):
         f.touch()
         t = time.time()
         doc.recompute()
@@ -157,10 +159,14 @@ TIERS = [("G0 1e-6", lambda r: r["g0r"] <= 1e-6), ("G0 1e-4", lambda r: r["g0r"]
          ("G0+G1 strict", lambda r: r["g0r"] <= 1e-6 and r["g1"] <= 1e-3)]
 
 
+METHODS = ("np", "mvc", "uvtran", "auto", "np_loose", "geomplate",
+           "np G2", "mvc G2", "uvtran G2", "auto G2", "geomplate G2")
+
+
 def summarize(results):
     rows = []
     for fam in ("cc", "cad"):
-        for meth in ("np", "mvc", "auto", "np_loose", "geomplate"):
+        for meth in METHODS:
             rs = [r[meth] for r in results if r["family"] == fam]
             if not rs:
                 continue
@@ -207,14 +213,19 @@ def main():
         r["np"] = run_ours(shape, hole, "np")
         r["mvc"] = run_ours(shape, hole, "mvc")
         r["auto"] = run_ours(shape, hole, "auto")
+        r["uvtran"] = run_ours(shape, hole, "uvtran")
         r["np_loose"] = run_ours(shape, hole, "np", loose=True)
         r["geomplate"] = run_geomplate(doc, shape, hole)
+        # The G2 requests: quality only, so one run each.
+        for m in ("np", "mvc", "uvtran", "auto"):
+            r[m + " G2"] = run_ours(shape, hole, m, continuity="G2", repeats=1)
+        r["geomplate G2"] = run_geomplate(doc, shape, hole, order=2, repeats=1)
         results.append(r)
 
         def fmt(x):
             return ("%.1e/%.1e %.2fs" % (x["g0r"], x["g1"], x["time"])) if x["ok"] else "FAIL %.2fs" % x["time"]
-        print("%-36s N=%d  np %-22s mvc %-22s plate %s" % (name, r["N"], fmt(r["np"]), fmt(r["mvc"]),
-                                                            fmt(r["geomplate"])))
+        print("%-36s N=%d  np %-22s mvc %-22s uvtran %-22s plate %s" % (
+            name, r["N"], fmt(r["np"]), fmt(r["mvc"]), fmt(r["uvtran"]), fmt(r["geomplate"])))
         sys.stdout.flush()
     rows = summarize(results)
     md = table(rows)
@@ -223,13 +234,13 @@ def main():
     with open(os.path.join(OUT, "bench_fill.json"), "w") as f:
         json.dump({"results": results, "summary": rows, "python": platform.python_version()}, f, indent=1)
     per_hole = ["", "Per hole: G0/scale / G1 [rad] / algorithm time [s].", "",
-                "| family | hole | N | edges | np | mvc | auto | geomplate |", "|---|---|---|---|---|---|---|---|"]
+                "| family | hole | N | edges | np | mvc | uvtran | auto | geomplate |", "|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         def cell(x):
             return ("%.1e / %.1e / %.3f" % (x["g0r"], x["g1"], x.get("core", x["time"]))) if x["ok"] else "fail"
-        per_hole.append("| %s | %s | %d | %d | %s | %s | %s | %s |" % (
-            r["family"], r["name"], r["N"], r["edges"], cell(r["np"]), cell(r["mvc"]), cell(r["auto"]),
-            cell(r["geomplate"])))
+        per_hole.append("| %s | %s | %d | %d | %s | %s | %s | %s | %s |" % (
+            r["family"], r["name"], r["N"], r["edges"], cell(r["np"]), cell(r["mvc"]), cell(r["uvtran"]),
+            cell(r["auto"]), cell(r["geomplate"])))
     with open(os.path.join(OUT, "bench_fill.md"), "w") as f:
         f.write(md + "\n" + "\n".join(per_hole) + "\n")
 

@@ -145,4 +145,30 @@ def test_failed_make_fill_leaves_document_as_it_was():
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_uvtran_method_projection_surface_and_fallback():
+    shape = load("cc_valence5")
+    assert "libtorch" in HoleFill.learnInfo(), HoleFill.learnInfo()
+    face, rep = HoleFill.fillHole(shape, 1, method="uvtran")
+    assert rep["method"] == "uvtran" and rep["status"] == "ok" and rep["g1"] <= 1e-3, (rep["method"], rep["g1"])
+    surf = HoleFill.projectionSurface(shape, 1)
+    assert surf.Surface.TypeId == "Part::GeomBSplineSurface" and surf.Surface.NbUPoles == 8
+    # The projection surface passes through the hole boundary it was predicted from.
+    hole = HoleFill.findHoles(shape)[0]
+    worst = max(surf.distToShape(Part.Vertex(shape.getElement(e).valueAt(shape.getElement(e).FirstParameter)))[0]
+                for e in hole.edges)
+    assert worst < 0.05 * hole.scale, worst
+    # Broken weights: the fill still happens, with MVC, and the report says why.
+    bad = os.path.join(os.environ.get("TMPDIR", "/tmp"), "holefill_broken_uvtran.pt")
+    with open(bad, "w") as f:
+        f.write("not a torch archive")
+    os.environ["HOLEFILL_UVTRAN_WEIGHTS"] = bad
+    try:
+        face, rep = HoleFill.fillHole(shape, 1, method="uvtran")
+        assert rep["method"] == "uvtran:mvc" and rep["status"] == "ok", rep["method"]
+        assert any("uvtran failed" in w and "corrupt" in w for w in rep["warnings"]), rep["warnings"]
+        expect_error(lambda: HoleFill.projectionSurface(shape, 1), "corrupt")
+    finally:
+        del os.environ["HOLEFILL_UVTRAN_WEIGHTS"]
+
+
 fcharness.run(globals())

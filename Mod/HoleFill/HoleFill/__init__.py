@@ -18,10 +18,10 @@ import json
 import HoleFillApp
 
 HoleFillError = HoleFillApp.HoleFillError
-METHODS = ("auto", "np", "mvc")
+METHODS = ("auto", "np", "mvc", "uvtran")
 CONTINUITIES = ("G0", "G1", "G2")
 
-__all__ = ["findHoles", "fillHole", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+__all__ = ["findHoles", "fillHole", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES"]
 
 
@@ -105,8 +105,9 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
-    method: "auto" (np for height-field-like holes, else mvc), "np" (nearest plane)
-    or "mvc" (regular N-gon with mean value mapping).
+    method: "auto" (np for height-field-like holes, else mvc), "np" (nearest plane),
+    "mvc" (regular N-gon with mean value mapping) or "uvtran" (learned projection surface;
+    falls back to mvc with a warning in the report when it cannot be used).
     continuity: "G0", "G1" or "G2"; tolerance (model units, 0 = 1e-6 x hole size) for G0,
     angularTolerance (radians) for G1, curvatureTolerance (relative) for G2.
     progress: callable(fraction) -> bool; return False to cancel.
@@ -130,6 +131,18 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     if sewn:
         return f, _shape(model), report
     return f, report
+
+
+def projectionSurface(shape, hole=1, weights=""):
+    """UVTran's predicted projection surface for a hole (a Part.Face over its whole domain):
+    the surface the "uvtran" method projects the hole boundary onto to get the pcurve.
+    hole as in fillHole; weights: a .pt file, "" for the shipped ones."""
+    return _shape(HoleFillApp.uvtranSurface(_brep(shape), _edgeIndices(shape, hole), weights)).Faces[0]
+
+
+def learnInfo():
+    """The learned-model backend, e.g. "libtorch 1.13.1 (2 threads) from .../libholefill_learn.so"."""
+    return HoleFillApp.learnInfo()
 
 
 def continuityReport(face, shape, hole=None):

@@ -28,8 +28,11 @@ class FillFeature:
 
         add("App::PropertyLinkSub", "Source", "Fill", "Object and edges of the hole (one edge names its whole loop)")
         add("App::PropertyEnumeration", "Method", "Fill", "Parameterization of the trimming curve")
-        if not obj.getEnumerationsOfProperty("Method"):
+        if list(obj.getEnumerationsOfProperty("Method")) != list(HoleFill.METHODS):
+            # New methods appear in documents saved by older versions; the chosen one is kept.
+            current = obj.Method if obj.getEnumerationsOfProperty("Method") else "auto"
             obj.Method = list(HoleFill.METHODS)
+            obj.Method = current if current in HoleFill.METHODS else "auto"
         add("App::PropertyEnumeration", "Continuity", "Fill", "Requested continuity with the surrounding faces")
         if not obj.getEnumerationsOfProperty("Continuity"):
             obj.Continuity = list(HoleFill.CONTINUITIES)

@@ -1,0 +1,46 @@
+#!/usr/bin/python3
+"""Plots a UVTran training log (log.csv from `holefill train uvtran`): training losses and the
+validation parameter error of both stages against the step, into one PNG."""
+import csv
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+
+def main(log, png):
+    rows = list(csv.DictReader(open(log)))
+    if not rows:
+        sys.exit("no rows in %s" % log)
+    step = [int(r["step"]) for r in rows]
+    col = lambda k: [float(r[k]) for r in rows]
+    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.5))
+    a.plot(step, col("coarse_ce"), label="stage 1 voxel CE (dv=0.1)")
+    s2 = [i for i, r in enumerate(rows) if r["stage"] == "2"]
+    if s2:
+        a.plot([step[i] for i in s2], [col("fine_ce")[i] for i in s2], label="stage 2 voxel CE (dv=0.01)")
+    a.plot(step, [100 * k for k in col("knot_mse")], label="knot MSE x 100")
+    a.set_xlabel("step")
+    a.set_ylabel("training loss (mean since last point)")
+    a.set_yscale("log")
+    a.grid(True, which="both", alpha=0.3)
+    a.legend()
+    b.plot(step, col("val_param_coarse"), label="stage 1 poles")
+    if s2:
+        b.plot([step[i] for i in s2], [col("val_param_fine")[i] for i in s2], label="stage 2 poles")
+    b.axhline(5e-3, color="k", ls="--", lw=0.8, label="goal 5e-3")
+    b.set_xlabel("step")
+    b.set_ylabel("validation parameter error (mean |uv - uv*|)")
+    b.set_yscale("log")
+    b.grid(True, which="both", alpha=0.3)
+    b.legend()
+    hours = float(rows[-1]["hours"])
+    fig.suptitle("UVTran training: %d steps, %.2f h" % (step[-1], hours))
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    print("wrote", png)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "training.png")
