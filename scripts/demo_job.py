@@ -1,5 +1,5 @@
 """HoleFill demo job (run by scripts/demo.sh inside freecadcmd): fills the hole of each
-bundled sample with NP and MVC at G1, and at G2 with NP, keeps the NP/G1 fill as a
+bundled sample with NP, MVC and UVTran at G1, and at G2 with NP and UVTran, keeps the NP/G1 fill as a
 parametric Fill object in a FreeCAD document, and writes to $HOLEFILL_DEMO_OUT:
 <sample>.FCStd, <sample>.step (the sewn model), <sample>.json (reports) and summary.json,
 then prints the continuity table."""
@@ -14,7 +14,7 @@ import HoleFill
 OUT = os.environ["HOLEFILL_DEMO_OUT"]
 SAMPLES = os.environ["HOLEFILL_SAMPLES"]
 NAMES = ["cc_valence5", "filleted_box_corner", "panel_6_sided"]
-RUNS = [("np", "G1"), ("mvc", "G1"), ("np", "G2")]
+RUNS = [("np", "G1"), ("mvc", "G1"), ("uvtran", "G1"), ("np", "G2"), ("uvtran", "G2")]
 
 rows = []
 summary = {}
@@ -47,15 +47,15 @@ with open(os.path.join(OUT, "summary.json"), "w") as f:
     json.dump(summary, f, indent=1)
 
 print()
-hdr = "%-20s %-4s %-4s %-4s %-18s %-10s %-10s %-10s %-9s %-7s %s" % (
+hdr = "%-20s %-4s %-10s %-4s %-18s %-10s %-10s %-10s %-9s %-7s %s" % (
     "sample", "N", "meth", "req", "status", "G0/scale", "G1 [rad]", "G2 [rel]", "poles", "time s", "achieved")
 print(hdr)
 print("-" * len(hdr))
 for name, r in rows:
     if r["status"] == "failed":
-        print("%-20s %-4s %-4s %-4s %-18s %s" % (name, "", r["method"], r["requested"], "failed", r["message"]))
+        print("%-20s %-4s %-10s %-4s %-18s %s" % (name, "", r["method"], r["requested"], "failed", r["message"]))
         continue
-    print("%-20s %-4d %-4s %-4s %-18s %-10.2e %-10.2e %-10.2e %-9s %-7.2f %s" % (
+    print("%-20s %-4d %-10s %-4s %-18s %-10.2e %-10.2e %-10.2e %-9s %-7.2f %s" % (
         name, r["corners"], r["method"], r["requested"], r["status"], r["g0_relative"], r["g1"], r["g2"],
         "%dx%d" % (r["poles_u"], r["poles_v"]), r["timings"]["total"], r["achieved"]))
 print("DESIGN tiers: G0 <= 1e-6 x scale (strict), G1 <= 1e-3 rad (strict), G2 <= 0.1")

@@ -7,10 +7,10 @@
 #include <string>
 
 extern "C" {
-// Predicts the projection surface of one canonical boundary (n points, xyz interleaved):
-// writes 64 poles (xyz, row-major i*8+j, i along u) and 8 interior knots (4 u then 4 v).
-// Returns 0, or non-zero with a message in err.
-typedef int (*HoleFillUvtranPredictFn)(const char* weights, const double* points, int n, int threads,
+// Predicts the projection surfaces of `batch` canonical boundaries (n points each, xyz
+// interleaved): writes per boundary 64 poles (xyz, row-major i*8+j, i along u) and 8 interior
+// knots (4 u then 4 v). Returns 0, or non-zero with a message in err.
+typedef int (*HoleFillUvtranPredictFn)(const char* weights, const double* points, int batch, int n, int threads,
                                        double* poles, double* knots, char* err, int errLen);
 // `holefill train uvtran ...` and `holefill eval uvtran ...`: argv[0] is the verb.
 typedef int (*HoleFillLearnMainFn)(int argc, char** argv);

@@ -16,6 +16,8 @@ namespace holefill::learn {
 struct UvtranOptions {
   std::string weights;  // empty: defaultUvtranWeights()
   int threads = 2;      // torch intra-op threads for the forward pass
+  bool augment = true;  // test-time augmentation: also predict from the loop run backwards (which the
+                        // network sees mirrored) and average the two surfaces
 };
 
 struct UvtranPrediction {

@@ -123,29 +123,31 @@ int evalMain(int argc, char** argv) {
 
 using namespace holefill::learn;
 
-extern "C" int holefill_uvtran_predict(const char* weights, const double* points, int n, int threads, double* poles,
-                                       double* knots, char* err, int errLen) {
+extern "C" int holefill_uvtran_predict(const char* weights, const double* points, int batch, int n, int threads,
+                                       double* poles, double* knots, char* err, int errLen) {
   try {
     if (!weights || !*weights) throw holefill::Error("no UVTran weights file given");
     UvtranNet net = cachedNet(weights);
     if (n != net->config.points)
       throw holefill::Error("UVTran expects " + std::to_string(net->config.points) + " boundary points, got " +
                             std::to_string(n));
-    for (int i = 0; i < 3 * n; ++i)
+    if (batch < 1) throw holefill::Error("UVTran needs at least one boundary");
+    for (int i = 0; i < 3 * n * batch; ++i)
       if (!std::isfinite(points[i])) throw holefill::Error("UVTran input holds NaN or infinity");
     if (threads > 0) torch::set_num_threads(threads);
     torch::NoGradGuard ng;
-    torch::Tensor x = torch::empty({1, n, 3});
-    for (int i = 0; i < 3 * n; ++i) x.data_ptr<float>()[i] = float(points[i]);
+    torch::Tensor x = torch::empty({batch, n, 3});
+    for (int i = 0; i < 3 * n * batch; ++i) x.data_ptr<float>()[i] = float(points[i]);
     const UvtranStage1 s1 = net->stage1(x);
     const torch::Tensor coarse = decodeVoxels(s1.coarseLogits, 0);
     const torch::Tensor fine = decodeVoxels(net->stage2(s1.features, coarse), 2).contiguous();
     const torch::Tensor k = s1.knots.contiguous();
-    for (int i = 0; i < 64 * 3; ++i) poles[i] = fine.data_ptr<float>()[i];
-    for (int j = 0; j < 4; ++j) {
-      knots[j] = k.data_ptr<float>()[2 * j];
-      knots[4 + j] = k.data_ptr<float>()[2 * j + 1];
-    }
+    for (int i = 0; i < 64 * 3 * batch; ++i) poles[i] = fine.data_ptr<float>()[i];
+    for (int b = 0; b < batch; ++b)
+      for (int j = 0; j < 4; ++j) {
+        knots[8 * b + j] = k.data_ptr<float>()[8 * b + 2 * j];
+        knots[8 * b + 4 + j] = k.data_ptr<float>()[8 * b + 2 * j + 1];
+      }
     return 0;
   } catch (const std::exception& e) {
     setError(err, errLen, e.what());

@@ -60,16 +60,23 @@ TEST(UvtranInference, StartPointAndDirectionDoNotChangeThePcurve) {
   std::vector<Eigen::Vector3d> shifted, reversed;
   for (int k = 0; k < n; ++k) shifted.push_back(3.0 * x.boundary[(k + 41) % n] + Eigen::Vector3d(1, 2, 3));
   for (int k = 0; k < n; ++k) reversed.push_back(x.boundary[(n - k) % n]);
-  const UvtranPrediction a = predictUvtran(x.boundary), b = predictUvtran(shifted), c = predictUvtran(reversed);
-  double shiftErr = 0, revErr = 0;
-  for (int k = 0; k < n; ++k) {
-    shiftErr = std::max(shiftErr, (b.uv[k] - a.uv[(k + 41) % n]).norm());
-    // The reversed loop sees the frame half-turned about x: the same pcurve, mirrored in v.
-    const Eigen::Vector2d m = c.uv[k];
-    revErr += (Eigen::Vector2d(m.x(), 1 - m.y()) - a.uv[(n - k) % n]).norm() / n;
+  for (bool augment : {true, false}) {
+    UvtranOptions o;
+    o.augment = augment;
+    const UvtranPrediction a = predictUvtran(x.boundary, o), b = predictUvtran(shifted, o), c = predictUvtran(reversed, o);
+    double shiftErr = 0, revErr = 0;
+    for (int k = 0; k < n; ++k) {
+      shiftErr = std::max(shiftErr, (b.uv[k] - a.uv[(k + 41) % n]).norm());
+      // The reversed loop is seen in a frame half-turned about x: the same pcurve, mirrored in v.
+      const Eigen::Vector2d m = c.uv[k];
+      revErr = std::max(revErr, (Eigen::Vector2d(m.x(), 1 - m.y()) - a.uv[(n - k) % n]).norm());
+    }
+    std::printf("augment %d: start shift changes uv by %.2g, reversal by %.2g\n", augment, shiftErr, revErr);
+    EXPECT_LT(shiftErr, 1e-5);  // exact: canonicalization removes start, placement and scale
+    // With augmentation both directions are averaged, so reversal is exact too; one pass alone
+    // relies on what the network learned from reversed training loops.
+    EXPECT_LT(revErr, augment ? 1e-5 : 0.03);
   }
-  EXPECT_LT(shiftErr, 1e-6);  // exact: canonicalization removes start, placement and scale
-  EXPECT_LT(revErr, 0.01);    // learned: mirrored input, mirrored answer
 }
 
 TEST(UvtranInference, BadInputsAndBadWeightsAreClearErrors) {
