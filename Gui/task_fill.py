@@ -168,8 +168,15 @@ class FillTaskPanel:
         self.report.setPlainText("Fill failed: %s" % (self.obj.getStatusString() or "see the report view"))
         return False
 
+    def _changedSincePreview(self):
+        """The panel's settings differ from those the preview was computed with."""
+        o = self.obj
+        return (o.Method != self.method.currentText() or o.Continuity != self.continuity.currentText() or
+                abs(float(o.Tolerance) - self.tolerance.value()) > 0 or o.Output != self.output.currentText() or
+                list(o.Source[1]) != list(self.edges))
+
     def accept(self):
-        if self.obj is None or not self.obj.isValid() or self.obj.isTouched():
+        if self.obj is None or not self.obj.isValid() or "Touched" in self.obj.State or self._changedSincePreview():
             if not self.runPreview():
                 return False  # keep the panel open: the report says what went wrong
         self.doc.commitTransaction()

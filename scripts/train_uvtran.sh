@@ -13,6 +13,6 @@ mkdir -p "$out"
 # The recipe of the shipped weights (Resources/models/uvtran.md); options given later win.
 "$build/App/holefill" train uvtran --out "$out" \
   --width 96 --feed-forward 192 --layers 2 --heads 4 --batch 32 \
-  --stage1-steps 2500 --stage2-steps 7000 --validate-every 250 --validation-samples 256 \
+  --stage1-steps 2500 --stage2-steps 3000 --validate-every 250 --validation-samples 256 \
   --threads 2 --checkpoint-minutes 5 "$@" 2>&1 | tee -a "$out/train.log"
 /usr/bin/python3 "$root/scripts/plot_training.py" "$out/log.csv" "$out/training.png"

@@ -30,10 +30,14 @@ def body():
     src.Shape = shape
     doc.recompute()
     view = FreeCADGui.ActiveDocument.ActiveView
-    view.viewIsometric()
+    hole = HoleFill.findHoles(src.Shape)[0]
+    # Look at the hole from outside: from the model's centre through the hole's centre.
+    pts = [src.Shape.getElement(e).CenterOfMass for e in hole.edges]
+    hc = sum(pts, FreeCAD.Vector()) * (1.0 / len(pts))
+    d = src.Shape.BoundBox.Center - hc
+    view.setViewDirection((d.x, d.y, d.z))
     view.fitAll()
     h.pump(300)
-    hole = HoleFill.findHoles(src.Shape)[0]
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(src, hole.edges[0])
     FreeCADGui.runCommand("HoleFill_FillHole")

@@ -11,8 +11,8 @@ namespace holefill::learn {
 
 struct UvtranTrainOptions {
   std::string outDir;             // checkpoint, log.csv and uvtran.pt go here
-  int stage1Steps = 12000;        // coarse stage alone
-  int stage2Steps = 24000;        // both stages
+  int stage1Steps = 2500;         // coarse stage alone
+  int stage2Steps = 3000;         // both stages
   int batch = 32;
   double learningRate = 1e-3;     // AdamW, linear warm-up then cosine decay per stage
   int threads = 2;
