@@ -180,12 +180,15 @@ def summarize(results):
             row["median_s"] = statistics.median(ts)
             row["max_s"] = max(ts)
             row["call_median_s"] = statistics.median(r["time"] for r in rs)
+            ps = [r["param_s"] for r in rs if "param_s" in r]
+            row["param_median_ms"] = 1e3 * statistics.median(ps) if ps else float("nan")
             rows.append(row)
     return rows
 
 
 def table(rows):
-    cols = ["family", "method", "holes", "failures"] + [t for t, _ in TIERS] + ["median_s", "max_s", "call_median_s"]
+    cols = ["family", "method", "holes", "failures"] + [t for t, _ in TIERS] + ["median_s", "max_s", "call_median_s",
+                                                                                "param_median_ms"]
     out = ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
     for r in rows:
         cells = []
