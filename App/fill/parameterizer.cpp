@@ -63,6 +63,27 @@ void nearestPlane(const std::vector<BoundarySample>& s, Parameterization& P) {
   for (const auto& x : s) P.uv.emplace_back((x.point - f.centre).dot(f.axis.col(2)), (x.point - f.centre).dot(f.axis.col(1)));
 }
 
+// The pcurve as a polygon of at most ~256 vertices (containment and mean value coordinates are
+// linear in its size); `at` holds each vertex's sample index.
+Polygon2 pcurvePolygon(const std::vector<Eigen::Vector2d>& uv, std::vector<int>& at) {
+  Polygon2 poly;
+  const int stride = std::max<int>(1, static_cast<int>(uv.size()) / 256);
+  for (int i = 0; i < static_cast<int>(uv.size()); i += stride) { poly.push_back(uv[i]); at.push_back(i); }
+  return poly;
+}
+
+// Interior nodes of a grid of `cells` x `cells` over [lo, hi] that lie inside the polygon.
+std::vector<Eigen::Vector2d> gridInside(const Polygon2& poly, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                        int cells) {
+  std::vector<Eigen::Vector2d> out;
+  for (int i = 1; i < cells; ++i)
+    for (int j = 1; j < cells; ++j) {
+      const Eigen::Vector2d x = lo + Eigen::Vector2d((hi - lo).x() * i / cells, (hi - lo).y() * j / cells);
+      if (contains(poly, x)) out.push_back(x);
+    }
+  return out;
+}
+
 void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const ParameterizationOptions& opt,
                Parameterization& P) {
   const int n = static_cast<int>(s.size());
@@ -105,37 +126,27 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
   }
   P.cornerSamples = corners;
   // Interior reference points by mean value interpolation of the boundary.
-  Polygon2 poly;
-  std::vector<Eigen::Vector3d> xyz;
-  const int stride = std::max(1, n / 256);
-  for (int i = 0; i < n; i += stride) { poly.push_back(P.uv[i]); xyz.push_back(s[i].point); }
-  const int G = opt.interiorReferenceGrid;
-  for (int i = 1; i < G; ++i)
-    for (int j = 1; j < G; ++j) {
-      const Eigen::Vector2d x(-R + 2 * R * i / G, -R + 2 * R * j / G);
-      if (!contains(poly, x)) continue;
-      const Eigen::VectorXd w = meanValueCoordinates(poly, x);
-      Eigen::Vector3d p = Eigen::Vector3d::Zero();
-      for (int k = 0; k < w.size(); ++k) p += w(k) * xyz[k];
-      P.interiorUV.push_back(x);
-      P.interiorXYZ.push_back(p);
-    }
+  std::vector<int> at;
+  const Polygon2 poly = pcurvePolygon(P.uv, at);
+  for (const auto& x : gridInside(poly, Eigen::Vector2d(-R, -R), Eigen::Vector2d(R, R), opt.interiorReferenceGrid)) {
+    const Eigen::VectorXd w = meanValueCoordinates(poly, x);
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int k = 0; k < w.size(); ++k) p += w(k) * s[at[k]].point;
+    P.interiorUV.push_back(x);
+    P.interiorXYZ.push_back(p);
+  }
 }
 
+// UVTran's interior reference points: its projection surface inside the pcurve.
 void interiorReferences(const BSplineSurface& surf, const ParameterizationOptions& opt, Parameterization& P) {
-  Polygon2 poly;
-  const int stride = std::max<int>(1, static_cast<int>(P.uv.size()) / 256);
-  for (size_t i = 0; i < P.uv.size(); i += stride) poly.push_back(P.uv[i]);
+  std::vector<int> at;
+  const Polygon2 poly = pcurvePolygon(P.uv, at);
   Eigen::AlignedBox2d box;
   for (const auto& q : P.uv) box.extend(q);
-  const int G = opt.interiorReferenceGrid;
-  for (int i = 1; i < G; ++i)
-    for (int j = 1; j < G; ++j) {
-      const Eigen::Vector2d x = box.min() + Eigen::Vector2d(box.sizes().x() * i / G, box.sizes().y() * j / G);
-      if (!contains(poly, x)) continue;
-      P.interiorUV.push_back(x);
-      P.interiorXYZ.push_back(surf.point(x.x(), x.y()));
-    }
+  for (const auto& x : gridInside(poly, box.min(), box.max(), opt.interiorReferenceGrid)) {
+    P.interiorUV.push_back(x);
+    P.interiorXYZ.push_back(surf.point(x.x(), x.y()));
+  }
 }
 
 void uvtran(const std::vector<BoundarySample>& s, const ParameterizationOptions& opt, Parameterization& P) {
@@ -151,7 +162,6 @@ void uvtran(const std::vector<BoundarySample>& s, const ParameterizationOptions&
                 " boundary diagonals from the boundary");
   P.uv = pred.uv;
   P.projectionSurface = pred.surface;
-  P.seconds = pred.seconds;
   interiorReferences(pred.surface, opt, P);
 }
 

@@ -54,7 +54,6 @@ struct Parameterization {
   ParamMethod chosen = ParamMethod::NearestPlane;  // the method used (differs from the request for Auto)
   std::vector<std::string> warnings;
   BSplineSurface projectionSurface;          // UVTran's predicted surface (same coordinates as the samples)
-  double seconds = 0;                        // time spent (UVTran: network + projection)
 };
 
 // `samples` must be in the coordinates the fill is solved in (normalized); `hole` gives corners and supports.
