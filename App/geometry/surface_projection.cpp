@@ -56,14 +56,16 @@ double newton(const BSplineSurface& s, const Domain& D, const Eigen::Vector3d& p
 
 ProjectionResult projectSequence(const BSplineSurface& s, const std::vector<Eigen::Vector3d>& points,
                                  const ProjectionOptions& opt) {
-  const Domain D{s.knotsU[s.degreeU], s.knotsU[s.knotsU.size() - s.degreeU - 1], s.knotsV[s.degreeV],
+  const Domain S{s.knotsU[s.degreeU], s.knotsU[s.knotsU.size() - s.degreeU - 1], s.knotsV[s.degreeV],
                  s.knotsV[s.knotsV.size() - s.degreeV - 1]};
+  const double eu = opt.extension * (S.u1 - S.u0), ev = opt.extension * (S.v1 - S.v0);
+  const Domain D{S.u0 - eu, S.u1 + eu, S.v0 - ev, S.v1 + ev};
   const int G = opt.gridCells;
   std::vector<Eigen::Vector2d> gridUV;
   std::vector<Eigen::Vector3d> gridXYZ;
   for (int i = 0; i <= G; ++i)
     for (int j = 0; j <= G; ++j) {
-      const Eigen::Vector2d q(D.u0 + (D.u1 - D.u0) * i / G, D.v0 + (D.v1 - D.v0) * j / G);
+      const Eigen::Vector2d q(S.u0 + (S.u1 - S.u0) * i / G, S.v0 + (S.v1 - S.v0) * j / G);
       gridUV.push_back(q);
       gridXYZ.push_back(s.point(q.x(), q.y()));
     }
@@ -73,6 +75,9 @@ ProjectionResult projectSequence(const BSplineSurface& s, const std::vector<Eige
       if ((gridXYZ[k] - p).squaredNorm() < (gridXYZ[best] - p).squaredNorm()) best = k;
     return gridUV[best];
   };
+  Eigen::AlignedBox3d box;
+  for (const auto& p : points) box.extend(p);
+  const double same = 1e-9 * box.diagonal().norm();
   ProjectionResult r;
   Eigen::Vector2d prev;
   double prevDist = 0;
@@ -84,6 +89,13 @@ ProjectionResult projectSequence(const BSplineSurface& s, const std::vector<Eige
       uv = gridSeed(p);
       ++r.gridSearches;
       dist = newton(s, D, p, uv, opt);
+    } else if ((p - points[k - 1]).norm() <= same || (p - points[0]).norm() <= same) {
+      // A repeated point (a corner sampled by both of its edges, a loop closed on its start)
+      // gets the very same parameters: two Newton answers a convergence tolerance apart would
+      // put a tiny segment of random direction into the pcurve, which can cross its neighbours.
+      const bool first = (p - points[0]).norm() <= same;
+      uv = first ? r.uv[0] : prev;
+      dist = first ? r.distance[0] : prevDist;
     } else {
       uv = prev;
       dist = newton(s, D, p, uv, opt);

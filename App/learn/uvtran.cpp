@@ -70,7 +70,9 @@ UvtranPrediction predictUvtran(const std::vector<Eigen::Vector3d>& loop, const U
     }
     p.surface.poles = 0.5 * (p.surface.poles + b.poles);
   }
-  const ProjectionResult r = projectSequence(p.surface, loop);
+  ProjectionOptions po;
+  po.extension = 0.25;
+  const ProjectionResult r = projectSequence(p.surface, loop, po);
   p.uv = r.uv;
   for (double d : r.distance) p.maxDistance = std::max(p.maxDistance, d);
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
