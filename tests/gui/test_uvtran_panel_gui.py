@@ -30,14 +30,10 @@ def body():
     src.Shape = shape
     doc.recompute()
     view = FreeCADGui.ActiveDocument.ActiveView
-    hole = HoleFill.findHoles(src.Shape)[0]
-    # Look at the hole from outside: from the model's centre through the hole's centre.
-    pts = [src.Shape.getElement(e).CenterOfMass for e in hole.edges]
-    hc = sum(pts, FreeCAD.Vector()) * (1.0 / len(pts))
-    d = src.Shape.BoundBox.Center - hc
-    view.setViewDirection((d.x, d.y, d.z))
+    view.viewIsometric()
     view.fitAll()
     h.pump(300)
+    hole = HoleFill.findHoles(src.Shape)[0]
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(src, hole.edges[0])
     FreeCADGui.runCommand("HoleFill_FillHole")
@@ -73,7 +69,6 @@ def body():
     rep = json.loads(fill.Report)
     assert fill.Method == "uvtran" and rep["method"] == "uvtran", (fill.Method, rep["method"], rep["warnings"])
     assert fill.Status == "ok" and fill.G1 <= 1e-3, (fill.Status, fill.G1)
-    view.fitAll()
     h.pump(300)
     view.saveImage(h.shot("gui_uvtran_2_filled.png"), 1024, 768, "White")
     h.finish(True, g0=fill.G0, g1=fill.G1, method=rep["method"])
