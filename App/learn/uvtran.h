@@ -15,7 +15,8 @@ namespace holefill::learn {
 
 struct UvtranOptions {
   std::string weights;  // empty: defaultUvtranWeights()
-  int threads = 2;      // torch intra-op threads for the forward pass
+  int threads = 1;      // torch intra-op threads: the batch of two is too small to share (2 threads
+                        // measured 150-500 ms per hole on a busy 2-core machine, 1 thread 10 ms)
   bool augment = true;  // test-time augmentation: also predict from the loop run backwards (which the
                         // network sees mirrored) and average the two surfaces
 };

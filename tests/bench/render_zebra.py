@@ -22,7 +22,7 @@ METHODS = ("np", "mvc", "uvtran")
 STRICT = lambda r: r.get("ok") and r["g0r"] <= 1e-6 and r["g1"] <= 1e-3
 
 
-def choose(results, count=4):
+def choose(results, count=3):
     """Holes where the methods' strict G1 outcomes differ, most different first."""
     scored = []
     for r in results:
@@ -71,7 +71,8 @@ def render(name, shape):
         face, rep = fills[m]
         faces = supports + ([face] if face is not None else [])
         for f in faces:
-            polys, cols = stripes(f, view, tol)
+            # The fill finely (its stripes are the point), the neighbours coarser (they are only context).
+            polys, cols = stripes(f, view, tol if f is face else 3 * tol)
             ax.add_collection3d(Poly3DCollection(polys, facecolors=cols, edgecolors="none"))
         r = hole["scale"] * 0.6
         ax.set_xlim(c.x - r, c.x + r); ax.set_ylim(c.y - r, c.y + r); ax.set_zlim(c.z - r, c.z + r)

@@ -134,7 +134,7 @@ extern "C" int holefill_uvtran_predict(const char* weights, const double* points
     if (batch < 1) throw holefill::Error("UVTran needs at least one boundary");
     for (int i = 0; i < 3 * n * batch; ++i)
       if (!std::isfinite(points[i])) throw holefill::Error("UVTran input holds NaN or infinity");
-    if (threads > 0) torch::set_num_threads(threads);
+    if (threads > 0 && threads != torch::get_num_threads()) torch::set_num_threads(threads);  // resizing the pool is costly
     torch::NoGradGuard ng;
     torch::Tensor x = torch::empty({batch, n, 3});
     for (int i = 0; i < 3 * n * batch; ++i) x.data_ptr<float>()[i] = float(points[i]);
