@@ -32,14 +32,18 @@ def choose(results, count=3):
     return [n for _, n in sorted(scored)[:count]]
 
 
-def stripes(face, view, tol):
+def stripes(face, view, tol, centre, radius):
     pts, tris = face.tessellate(tol)
-    vals = []
-    for p in pts:
+    # Only what lies near the hole is drawn (neighbours can be whole sides of a model).
+    tris = [t for t in tris if min((pts[i] - centre).Length for i in t) < radius]
+    used = sorted({i for t in tris for i in t})
+    vals = {}
+    for i in used:
+        p = pts[i]
         u, v = face.Surface.parameter(p)
         n = face.normalAt(u, v)
         r = view - n * (2 * view.dot(n))  # the view ray reflected
-        vals.append(r.x * 0.6 + r.y * 0.8)
+        vals[i] = r.x * 0.6 + r.y * 0.8
     polys, cols = [], []
     for t in tris:
         polys.append([(pts[i].x, pts[i].y, pts[i].z) for i in t])
@@ -64,7 +68,7 @@ def render(name, shape):
     u0, u1, v0, v1 = ref.ParameterRange
     nrm = ref.normalAt(0.5 * (u0 + u1), 0.5 * (v0 + v1))
     view = FreeCAD.Vector(nrm).normalize()
-    tol = hole["scale"] * 4e-4
+    tol = hole["scale"] * 1e-3
     fig = plt.figure(figsize=(5 * len(METHODS), 5))
     for k, m in enumerate(METHODS):
         ax = fig.add_subplot(1, len(METHODS), k + 1, projection="3d")
@@ -72,7 +76,7 @@ def render(name, shape):
         faces = supports + ([face] if face is not None else [])
         for f in faces:
             # The fill finely (its stripes are the point), the neighbours coarser (they are only context).
-            polys, cols = stripes(f, view, tol if f is face else 3 * tol)
+            polys, cols = stripes(f, view, tol if f is face else 3 * tol, c, 0.7 * hole["scale"])
             ax.add_collection3d(Poly3DCollection(polys, facecolors=cols, edgecolors="none"))
         r = hole["scale"] * 0.6
         ax.set_xlim(c.x - r, c.x + r); ax.set_ylim(c.y - r, c.y + r); ax.set_zlim(c.z - r, c.z + r)

@@ -156,7 +156,7 @@ def test_uvtran_method_projection_surface_and_fallback():
     hole = HoleFill.findHoles(shape)[0]
     worst = max(surf.distToShape(Part.Vertex(shape.getElement(e).valueAt(shape.getElement(e).FirstParameter)))[0]
                 for e in hole.edges)
-    assert worst < 0.05 * hole.scale, worst
+    assert worst < 0.05 * hole["scale"], (worst, hole["scale"])
     # Broken weights: the fill still happens, with MVC, and the report says why.
     bad = os.path.join(os.environ.get("TMPDIR", "/tmp"), "holefill_broken_uvtran.pt")
     with open(bad, "w") as f:
