@@ -14,7 +14,6 @@ echo
 (
   . tests/fcenv.sh "$build/Mod/HoleFill"
   freecadcmd tests/bench/bench_fill.py 2>&1 | grep -v '^ *#\|^$\|Juergen\|licensed\|wouldn.t be possible\|Libs:\|Recompute\|(100 %)\|(50 %)'
-  freecadcmd tests/bench/render_zebra.py 2>&1 | grep "zebra:" || true
   rm -rf "$HOME"
 )
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

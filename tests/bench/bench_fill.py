@@ -210,9 +210,7 @@ def main():
         ([("cad", n, s) for n, s in cad_holes()] if "cad" in fams else [])
     doc = FreeCAD.newDocument("Bench")
     results = []
-    os.makedirs(os.path.join(OUT, "holes"), exist_ok=True)
     for fam, name, shape in holes:
-        shape.exportBrep(os.path.join(OUT, "holes", name + ".brep"))  # for render_zebra.py
         hole = HoleFill.findHoles(shape)[0]
         r = {"family": fam, "name": name, "N": hole.corners, "edges": len(hole.edges)}
         r["np"] = run_ours(shape, hole, "np")
