@@ -47,7 +47,6 @@ UvtranPrediction predictUvtran(const std::vector<Eigen::Vector3d>& loop, const U
   UvtranPrediction p;
   std::vector<double> in;
   const CanonicalBoundary fwd = networkInput(loop, false, in);  // input errors first, before the library
-  p.frame = fwd.frame;
   p.weights = opt.weights.empty() ? defaultUvtranWeights() : opt.weights;
   if (p.weights.empty())
     throw Error("no UVTran weights found (looked for Resources/models/uvtran.pt; set HOLEFILL_UVTRAN_WEIGHTS)");

@@ -23,7 +23,6 @@ struct UvtranOptions {
 
 struct UvtranPrediction {
   BSplineSurface surface;           // projection surface, model coordinates, domain [0, 1]^2
-  CanonicalFrame frame;
   std::vector<Eigen::Vector2d> uv;  // pcurve: one per input loop point
   double maxDistance = 0;           // largest distance of a loop point from the surface (model units)
   double seconds = 0;               // network + projection

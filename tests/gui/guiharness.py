@@ -47,3 +47,17 @@ def run(fn, delay_ms=0):
             finish(False, error=traceback.format_exc())
 
     QtCore.QTimer.singleShot(delay_ms, wrapper)
+
+
+def sample_document(doc_name, label, sample):
+    """A new document holding one bundled sample model (Resources/samples/<sample>.brep)."""
+    import FreeCAD
+    import Part
+    import HoleFill
+    doc = FreeCAD.newDocument(doc_name)
+    src = doc.addObject("Part::Feature", label)
+    shape = Part.Shape()
+    shape.read(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples", sample + ".brep"))
+    src.Shape = shape
+    doc.recompute()
+    return doc, src

@@ -1,11 +1,9 @@
 """GUI test: activate HoleFill, click one edge of a hole with the real mouse (xdotool),
 run "Fill hole", press OK in the task panel, and check the Fill object; screenshots saved."""
-import os
 import subprocess
 
 import FreeCAD
 import FreeCADGui
-import Part
 from PySide2 import QtCore, QtWidgets
 
 import guiharness as h
@@ -29,12 +27,7 @@ def body():
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
     h.pump(300)
     assert FreeCADGui.activeWorkbench().name() == "HoleFillWorkbench"
-    doc = FreeCAD.newDocument("GuiFill")
-    src = doc.addObject("Part::Feature", "Panel")
-    shape = Part.Shape()
-    shape.read(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples", "panel_6_sided.brep"))
-    src.Shape = shape
-    doc.recompute()
+    doc, src = h.sample_document("GuiFill", "Panel", "panel_6_sided")
     view = FreeCADGui.ActiveDocument.ActiveView
     view.viewTop()
     view.fitAll()

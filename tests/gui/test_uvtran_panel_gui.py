@@ -1,11 +1,9 @@
 """GUI test: the Fill task panel with UVTran: pick "uvtran" in the real combo box, tick "Show UVTran
 projection surface" (a translucent overlay appears in the 3D view), Preview, OK; the Fill object
 uses UVTran (no fallback), and the overlay is gone once the panel closes. Screenshots saved."""
-import os
 
 import FreeCAD
 import FreeCADGui
-import Part
 from PySide2 import QtWidgets
 from PySide2.QtTest import QTest
 from PySide2 import QtCore
@@ -22,13 +20,7 @@ def body():
     import HoleFill
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
     h.pump(300)
-    doc = FreeCAD.newDocument("GuiUvtran")
-    src = doc.addObject("Part::Feature", "Corner")
-    shape = Part.Shape()
-    shape.read(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples",
-                            "filleted_box_corner.brep"))
-    src.Shape = shape
-    doc.recompute()
+    doc, src = h.sample_document("GuiUvtran", "Corner", "filleted_box_corner")
     view = FreeCADGui.ActiveDocument.ActiveView
     view.viewIsometric()
     view.fitAll()

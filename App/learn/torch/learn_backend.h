@@ -1,8 +1,7 @@
-// The learned-model backend of HoleFill: libtorch, linked into App/learn/ and
-// nowhere else (DESIGN.md). Models (UVTran, BIDGCN) live beside this file and
-// reach the rest of the core through plain Eigen/std interfaces, so only files
-// in this folder include torch headers. This header reports what backend the
-// build has, for `holefill --version` and the Python module.
+// The learned-model backend of HoleFill: libtorch, linked into libholefill_learn.so
+// and nowhere else (DESIGN.md); the core reaches the models through the C entry
+// points of learn/learn_library.h. This header reports what backend the library
+// has (holefill_learn_info, HoleFill.learnInfo(), the learn_backend ctest).
 #pragma once
 
 #include <string>

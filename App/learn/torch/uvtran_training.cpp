@@ -243,6 +243,8 @@ UvtranEvaluation evaluateUvtran(const std::string& weights, int count, bool test
     decodeVoxels(f.fineLogits, window);
   }
   ev.secondsPerHole = since(t) / reps;
+  ev.parameters = net->parameterCount();
+  ev.flopsPerHole = net->flopsPerHole();
   return ev;
 }
 

@@ -34,6 +34,8 @@ struct UvtranEvaluation {
   double poleErrorCoarse = 0, poleErrorFine = 0;    // mean pole distance (canonical units)
   double knotRmse = 0;
   double secondsPerHole = 0;                        // forward pass of both stages, batch of one
+  long long parameters = 0;
+  double flopsPerHole = 0;
 };
 
 // On `count` samples of the validation (test = false) or test split.
