@@ -22,6 +22,7 @@
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
+#include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
 
 using namespace holefill;
@@ -34,6 +35,11 @@ const char* kUsage =
     "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...]\n"
     "                [--face-out FACE.brep] [--method auto|np|mvc|uvtran|support] [--continuity G0|G1|G2]\n"
     "                [--tolerance T] [--angular-tolerance RAD] [--weights UVTRAN.pt] [--json]\n"
+    "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
+    "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
+    "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
+    "                [--isophote-direction x,y,z] [--direction x,y,z] [--scale-percentile LO,HI | --scale-range LO,HI]\n"
+    "                [--symmetric auto|yes|no] [--normal-angle DEG] [--edges 0|1] [--legend 0|1] [--json]\n"
     "  holefill samples DIR        write the bundled sample models as .brep\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
@@ -170,6 +176,31 @@ int cmdFill(const Args& a) {
   return code;
 }
 
+int cmdRender(const Args& a) {
+  if (a.input.empty()) throw Error("render: no input file");
+  if (!a.has("--out")) throw Error("render: --out PNG is required");
+  std::map<std::string, std::string> given;
+  for (const auto& [k, v] : a.opt)
+    if (k != "--out" && k != "--json") given[k.substr(2)] = v;
+  if (!given.count("mode")) given["mode"] = "zebra";
+  const RenderOptions o = parseRenderOptions(given);  // before reading: a bad option costs no read
+  const RenderResult r = renderInspection(readShape(a.input), o);
+  writePng(r.image, a.get("--out"));
+  if (a.has("--json")) {
+    std::cout << toJson(r, o) << "\n";
+  } else {
+    std::printf("%s: %s %dx%d, %lld vertices, normal angle <= %.2f deg inside faces (%.2f on boundaries)",
+                a.get("--out").c_str(), toString(o.mode).c_str(), r.image.width, r.image.height,
+                static_cast<long long>(r.vertices), r.maxInteriorNormalAngle * 180 / M_PI, r.maxBoundaryNormalAngle * 180 / M_PI);
+    if (o.mode == RenderMode::Curvature)
+      std::printf(", %s in [%.4g, %.4g], colours span [%.4g, %.4g]", toString(o.quantity).c_str(), r.valueMin, r.valueMax,
+                  r.scale.low, r.scale.high);
+    std::printf("; %.2f s + %.2f s\n", r.tessellationSeconds, r.renderSeconds);
+  }
+  for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return 0;
+}
+
 int cmdSamples(const Args& a) {
   if (a.input.empty()) throw Error("samples: no output folder");
   for (const auto& n : samples::names()) {
@@ -200,6 +231,7 @@ int main(int argc, char** argv) {
     if (a.verb == "holes") return cmdHoles(a);
     if (a.verb == "fill") return cmdFill(a);
     if (a.verb == "samples") return cmdSamples(a);
+    if (a.verb == "render") return cmdRender(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

@@ -1,5 +1,7 @@
 #include "geometry/differential_geometry.h"
 
+#include <cmath>
+
 namespace holefill {
 
 bool unitNormal(const SurfaceJet& j, Eigen::Vector3d& n) {
@@ -23,6 +25,31 @@ double normalCurvature(const SurfaceJet& j, const Eigen::Vector3d& n, const Eige
   if (I <= 0.0) return 0.0;
   const double II = (ab(0) * ab(0) * j.suu + 2.0 * ab(0) * ab(1) * j.suv + ab(1) * ab(1) * j.svv).dot(n);
   return II / I;
+}
+
+PrincipalCurvatures principalCurvatures(const SurfaceJet& j, const Eigen::Vector3d& n) {
+  Eigen::Matrix2d I, II;
+  I << j.su.dot(j.su), j.su.dot(j.sv), j.su.dot(j.sv), j.sv.dot(j.sv);
+  II << j.suu.dot(n), j.suv.dot(n), j.suv.dot(n), j.svv.dot(n);
+  // II x = k I x: symmetric-definite, so the eigenvalues are real and the directions I-orthogonal.
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> es(II, I);
+  PrincipalCurvatures p;
+  p.k2 = es.eigenvalues()(0);
+  p.k1 = es.eigenvalues()(1);
+  p.gaussian = II.determinant() / I.determinant();
+  p.mean = 0.5 * (p.k1 + p.k2);
+  const Eigen::Vector2d x1 = es.eigenvectors().col(1);
+  p.d1 = (x1(0) * j.su + x1(1) * j.sv).normalized();
+  p.d2 = n.cross(p.d1).normalized();
+  return p;
+}
+
+double curvatureAlong(double k1, double k2, const Eigen::Vector3d& d1, const Eigen::Vector3d& n, const Eigen::Vector3d& d) {
+  const Eigen::Vector3d t = d - d.dot(n) * n;
+  const double len2 = t.squaredNorm();
+  if (len2 <= 0.0) return 0.0;
+  const double c2 = std::pow(t.dot(d1), 2) / len2;
+  return k1 * c2 + k2 * (1.0 - c2);
 }
 
 }  // namespace holefill
