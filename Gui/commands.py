@@ -4,7 +4,7 @@ import FreeCADGui
 
 import HoleFillGui
 
-COMMANDS = ["HoleFill_FillHole"]
+COMMANDS = ["HoleFill_FillHole", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
 
 
 class FillHoleCommand:
@@ -22,5 +22,62 @@ class FillHoleCommand:
         FreeCADGui.Control.showDialog(task_fill.FillTaskPanel())
 
 
+class _InspectCommand:
+    """Opens the panel on the selection; when the overlay of its kind is shown, removes it (toggle)."""
+    kind = menu = tip = icon = None
+
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon(self.icon), "MenuText": self.menu, "ToolTip": self.tip}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from HoleFillGui import inspect_panels, inspection_overlay
+        if inspection_overlay.nodes(self.kind):
+            inspection_overlay.remove(self.kind)
+            FreeCAD.Console.PrintMessage("HoleFill: %s overlay removed\n" % self.kind.lower())
+            return
+        try:
+            panel = self.panel(inspect_panels, inspection_overlay)
+        except inspection_overlay.SelectionError as e:
+            inspect_panels._message(str(e))
+            return
+        except Exception as e:  # a core error on this shape: say it, change nothing
+            inspect_panels._message("%s failed: %s" % (self.menu, e))
+            inspection_overlay.remove(self.kind)
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
+class CurvatureMapCommand(_InspectCommand):
+    kind, menu, icon = "Curvature", "Curvature map", "HoleFill_Curvature.svg"
+    tip = ("Colour the selected faces or objects by mean, Gaussian or principal curvature, computed from the\n"
+           "exact surfaces. Run again to remove the colours.")
+
+    def panel(self, panels, overlay):
+        return panels.CurvaturePanel(overlay.targets_from_selection())
+
+
+class ZebraStripesCommand(_InspectCommand):
+    kind, menu, icon = "Zebra", "Zebra stripes", "HoleFill_Zebra.svg"
+    tip = ("Reflection lines (follow the view) or isophotes on the selected faces or objects: a stripe that\n"
+           "breaks shows a G1 break, a kink a G2 break. Run again to remove them.")
+
+    def panel(self, panels, overlay):
+        return panels.ZebraPanel(overlay.targets_from_selection())
+
+
+class ContinuityCheckCommand(_InspectCommand):
+    kind, menu, icon = "Continuity", "Continuity check", "HoleFill_Continuity.svg"
+    tip = "Select two adjacent faces or a Fill object: G0/G1/G2 along the shared boundary, drawn in colour."
+
+    def panel(self, panels, overlay):
+        return panels.ContinuityPanel(*panels.continuity_target())
+
+
 def register():
     FreeCADGui.addCommand("HoleFill_FillHole", FillHoleCommand())
+    FreeCADGui.addCommand("HoleFill_CurvatureMap", CurvatureMapCommand())
+    FreeCADGui.addCommand("HoleFill_ZebraStripes", ZebraStripesCommand())
+    FreeCADGui.addCommand("HoleFill_ContinuityCheck", ContinuityCheckCommand())

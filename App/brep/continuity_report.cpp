@@ -3,7 +3,11 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Curve2d.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <Extrema_ExtPC.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -61,6 +65,7 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
     int shared = -1;
     for (size_t k = 0; k < hole.edges.size(); ++k)
       if (hole.edges[k].edge.IsSame(E)) shared = static_cast<int>(k);
+    if (shared < 0 && opt.sharedEdgesOnly) continue;
     for (int i = 0; i <= opt.samplesPerEdge; ++i) {
       const double t = a + (b - a) * i / opt.samplesPerEdge;
       const gp_Pnt2d uv = pc.Value(t);
@@ -100,6 +105,7 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
         g1 = M_PI / 2;  // singular normal on one side: no tangent plane to agree on
       }
       ++r.samples;
+      r.along.push_back({jf.p, hole.edges[best].edgeIndex, g0, g1, g2});
       r.g0 = std::max(r.g0, g0);
       r.g1 = std::max(r.g1, g1);
       r.g2 = std::max(r.g2, g2);
@@ -117,6 +123,41 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
   r.g1Loose = r.g1 <= tol::kG1Loose;
   r.g2Ok = r.g2 <= tol::kG2Tier;
   return r;
+}
+
+ContinuityReport faceContinuity(const TopoDS_Shape& model, int a, int b, const ContinuityOptions& options) {
+  TopTools_IndexedMapOfShape faces, edges;
+  TopExp::MapShapes(model, TopAbs_FACE, faces);
+  TopExp::MapShapes(model, TopAbs_EDGE, edges);
+  for (int k : {a, b})
+    if (k < 1 || k > faces.Extent())
+      throw Error("face " + std::to_string(k) + " does not exist: the shape has " + std::to_string(faces.Extent()) + " faces");
+  if (a == b) throw Error("select two different faces");
+  const TopoDS_Face fa = TopoDS::Face(faces(a)), fb = TopoDS::Face(faces(b));
+  TopTools_IndexedMapOfShape edgesOfA;
+  TopExp::MapShapes(fa, TopAbs_EDGE, edgesOfA);
+  Hole hole;
+  Bnd_Box box;
+  for (TopExp_Explorer ex(fb, TopAbs_EDGE); ex.More(); ex.Next()) {
+    const TopoDS_Edge e = TopoDS::Edge(ex.Current());
+    if (BRep_Tool::Degenerated(e) || !edgesOfA.Contains(e)) continue;
+    bool seen = false;
+    for (const auto& he : hole.edges) seen = seen || he.edge.IsSame(e);
+    if (seen) continue;
+    HoleEdge he;
+    he.edge = e;
+    he.edgeIndex = edges.FindIndex(e);
+    he.support = fa;
+    he.supportIndex = a;
+    hole.edges.push_back(he);
+    BRepBndLib::Add(e, box);
+  }
+  if (hole.edges.empty())
+    throw Error("faces " + std::to_string(a) + " and " + std::to_string(b) + " share no edge: select two adjacent faces");
+  hole.scale = std::sqrt(box.SquareExtent());
+  ContinuityOptions o = options;
+  o.sharedEdgesOnly = true;
+  return continuityReport(fb, hole, o);
 }
 
 }  // namespace holefill

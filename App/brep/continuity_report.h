@@ -8,6 +8,7 @@
 // fills and a peer's (FreeCAD Surface Filling), so benchmarks compare like with like.
 #pragma once
 
+#include <Eigen/Dense>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <string>
@@ -22,8 +23,16 @@ struct EdgeContinuity {
   double g0 = 0, g1 = 0, g2 = 0;
 };
 
+// One boundary sample with its deviations, for drawing the boundary coloured by continuity.
+struct ContinuitySample {
+  Eigen::Vector3d point;
+  int edgeIndex = 0;
+  double g0 = 0, g1 = 0, g2 = 0;
+};
+
 struct ContinuityReport {
   int samples = 0;
+  std::vector<ContinuitySample> along;  // every sample, in boundary order (not written to JSON)
   double scale = 0;
   double g0 = 0, g0Relative = 0, g1 = 0, g2 = 0;
   bool g0Strict = false, g0Loose = false, g1Strict = false, g1Loose = false, g2Ok = false;  // STR tiers
@@ -33,7 +42,8 @@ struct ContinuityReport {
 };
 
 struct ContinuityOptions {
-  int samplesPerEdge = 50;   // per edge of the filling face
+  int samplesPerEdge = 50;       // per edge of the filling face
+  bool sharedEdgesOnly = false;  // sample only the face's edges that are edges of the hole
 };
 
 class JsonWriter;
@@ -42,5 +52,10 @@ void writeJsonFields(JsonWriter& j, const ContinuityReport& r);
 
 // `hole` is a hole of `model` (by detectHoles); `face` may or may not share its edges.
 ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, const ContinuityOptions& options = {});
+
+// Continuity across the edges two faces of `model` share (1-based FreeCAD Face<k> indices): face
+// `b` measured against face `a` along the shared edges only, scale = their bounding-box diagonal.
+// Throws when an index is out of range or the faces share no edge.
+ContinuityReport faceContinuity(const TopoDS_Shape& model, int a, int b, const ContinuityOptions& options = {});
 
 }  // namespace holefill

@@ -6,6 +6,7 @@
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -17,6 +18,7 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
 
 namespace py = pybind11;
@@ -54,24 +56,48 @@ py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std
   });
 }
 
+ContinuityReport reportOnHole(const std::string& faceBrep, const std::string& modelBrep, const std::vector<int>& edges) {
+  const TopoDS_Shape face = shapeFromBrepString(faceBrep), model = shapeFromBrepString(modelBrep);
+  TopoDS_Face f;
+  int faces = 0;
+  for (TopExp_Explorer ex(face, TopAbs_FACE); ex.More(); ex.Next(), ++faces) f = TopoDS::Face(ex.Current());
+  if (faces != 1) throw Error("continuityReport needs exactly one face, got " + std::to_string(faces));
+  HoleDetectionOptions d;
+  d.includeOuterBoundary = true;
+  const HoleDetectionResult detection = detectHoles(model, d);
+  return continuityReport(f, holeContainingEdges(detection, edges));
+}
+
 std::string report(const std::string& faceBrep, const std::string& modelBrep, const std::vector<int>& edges) {
   return guarded([&] {
-    const TopoDS_Shape face = shapeFromBrepString(faceBrep), model = shapeFromBrepString(modelBrep);
-    TopoDS_Face f;
-    int faces = 0;
-    for (TopExp_Explorer ex(face, TopAbs_FACE); ex.More(); ex.Next(), ++faces) f = TopoDS::Face(ex.Current());
-    if (faces != 1) throw Error("continuityReport needs exactly one face, got " + std::to_string(faces));
-    HoleDetectionOptions d;
-    d.includeOuterBoundary = true;
-    const HoleDetectionResult detection = detectHoles(model, d);
-    const Hole& hole = holeContainingEdges(detection, edges);
-    const ContinuityReport r = continuityReport(f, hole);
     JsonWriter j;
     j.beginObject();
-    writeJsonFields(j, r);
+    writeJsonFields(j, reportOnHole(faceBrep, modelBrep, edges));
     j.endObject();
     return j.str();
   });
+}
+
+// Continuity report as (JSON text, samples (k x 6: x y z g0 g1 g2), edge index per sample).
+py::tuple continuityTuple(const ContinuityReport& r) {
+  JsonWriter j;
+  j.beginObject();
+  writeJsonFields(j, r);
+  j.endObject();
+  Eigen::MatrixXd samples(static_cast<Eigen::Index>(r.along.size()), 6);
+  std::vector<int> edges;
+  for (size_t i = 0; i < r.along.size(); ++i) {
+    const auto& a = r.along[i];
+    samples.row(static_cast<Eigen::Index>(i)) << a.point.transpose(), a.g0, a.g1, a.g2;
+    edges.push_back(a.edgeIndex);
+  }
+  return py::make_tuple(j.str(), samples, edges);
+}
+
+std::map<std::string, std::string> stringOptions(const py::dict& d) {
+  std::map<std::string, std::string> m;
+  for (const auto& kv : d) m[py::str(kv.first)] = py::str(kv.second);
+  return m;
 }
 
 }  // namespace
@@ -119,6 +145,121 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, "The learned-model backend (loads libtorch on first call).");
   m.def("continuityReport", &report, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
         "G0/G1/G2 of a face against the hole of the model holding the given edges, as JSON.");
+  m.def("inspectionMesh", [](const std::string& brep, const std::vector<int>& faces, double maxNormalAngleDeg) {
+    return guarded([&] {
+      TessellationOptions o;
+      o.faces = faces;
+      o.maxNormalAngle = maxNormalAngleDeg * M_PI / 180.0;
+      TessellationResult t;
+      {
+        py::gil_scoped_release release;
+        t = tessellateForInspection(shapeFromBrepString(brep), o);
+      }
+      const InspectionMesh& m = t.mesh;
+      py::dict d;
+      d["points"] = m.fields.points;
+      d["normals"] = m.fields.normals;
+      d["k1"] = m.fields.k1;
+      d["k2"] = m.fields.k2;
+      d["d1"] = m.fields.d1;
+      d["regular"] = std::vector<int>(m.fields.regular.begin(), m.fields.regular.end());
+      d["triangles"] = Eigen::MatrixX3i(m.triangles);
+      d["triangleFace"] = m.triangleFace;
+      d["vertexFace"] = m.vertexFace;
+      py::list edges;
+      for (size_t i = 0; i < m.edgePolylines.size(); ++i) edges.append(py::make_tuple(m.edgeIndex[i], m.edgePolylines[i]));
+      d["edges"] = edges;
+      d["diagonal"] = m.diagonal;
+      d["maxInteriorNormalAngle"] = t.maxInteriorNormalAngle;
+      d["maxBoundaryNormalAngle"] = t.maxBoundaryNormalAngle;
+      d["warnings"] = t.warnings;
+      d["seconds"] = t.seconds;
+      return d;
+    });
+  }, py::arg("brep"), py::arg("faces") = std::vector<int>(), py::arg("maxNormalAngleDeg") = 2.0,
+     "Adaptive tessellation with exact per-vertex fields (points, normals, k1 >= k2, d1, ...) as a dict of arrays.");
+  m.def("curvatureValues", [](const Eigen::MatrixX3d& normals, const Eigen::VectorXd& k1, const Eigen::VectorXd& k2,
+                              const Eigen::MatrixX3d& d1, const std::string& quantity, const Eigen::Vector3d& direction) {
+    return guarded([&] {
+      const Eigen::Index n = normals.rows();
+      if (k1.size() != n || k2.size() != n || d1.rows() != n) throw Error("curvatureValues: arrays of different lengths");
+      SurfaceFields f;
+      f.resize(n);
+      f.normals = normals;
+      f.k1 = k1;
+      f.k2 = k2;
+      f.d1 = d1;
+      for (Eigen::Index i = 0; i < n; ++i) f.regular[static_cast<size_t>(i)] = std::isfinite(k1(i)) ? 1 : 0;
+      const CurvatureQuantity q = curvatureQuantityFromString(quantity);
+      return py::make_tuple(curvatureValues(f, q, direction), isSigned(q));
+    });
+  }, py::arg("normals"), py::arg("k1"), py::arg("k2"), py::arg("d1"), py::arg("quantity"),
+     py::arg("direction") = Eigen::Vector3d(1, 0, 0), "(values, signed) of a curvature quantity per vertex.");
+  m.def("colorScale", [](const Eigen::VectorXd& values, bool signedQuantity, double lowPercentile, double highPercentile,
+                         py::object low, py::object high, int symmetric) {
+    return guarded([&] {
+      ColorScaleOptions o;
+      o.lowPercentile = lowPercentile;
+      o.highPercentile = highPercentile;
+      o.symmetric = symmetric;
+      if (!low.is_none() || !high.is_none()) {
+        if (low.is_none() || high.is_none()) throw Error("a colour range by value needs both low and high");
+        o.byValue = true;
+        o.low = low.cast<double>();
+        o.high = high.cast<double>();
+      }
+      const ColorScale s = makeColorScale(values, signedQuantity, o);
+      Eigen::MatrixX3f colors(values.size(), 3);
+      for (Eigen::Index i = 0; i < values.size(); ++i) {
+        const auto c = s.color(values(i));
+        colors.row(i) << c[0], c[1], c[2];
+      }
+      py::dict d;
+      d["low"] = s.low;
+      d["high"] = s.high;
+      d["diverging"] = s.diverging;
+      d["colors"] = colors;
+      const auto ticks = s.ticks(6);
+      d["ticks"] = ticks;
+      std::vector<std::string> labels;
+      for (double t : ticks) labels.push_back(tickLabel(t));
+      d["labels"] = labels;
+      Eigen::MatrixX3f ramp(64, 3);
+      for (int i = 0; i < 64; ++i) {
+        const auto c = s.color(s.low + (s.high - s.low) * i / 63.0);
+        ramp.row(i) << c[0], c[1], c[2];
+      }
+      d["ramp"] = ramp;
+      return d;
+    });
+  }, py::arg("values"), py::arg("signedQuantity"), py::arg("lowPercentile") = 2.0, py::arg("highPercentile") = 98.0,
+     py::arg("low") = py::none(), py::arg("high") = py::none(), py::arg("symmetric") = -1,
+     "Colour scale (low, high, diverging, per-value colors, ticks, labels, 64-step ramp) of curvature values.");
+  m.def("renderImage", [](const std::string& brep, const py::dict& options, const std::string& path) {
+    return guarded([&] {
+      const RenderOptions o = parseRenderOptions(stringOptions(options));
+      RenderResult r;
+      {
+        py::gil_scoped_release release;
+        r = renderInspection(shapeFromBrepString(brep), o);
+        if (!path.empty()) writePng(r.image, path);
+      }
+      return py::make_tuple(path.empty() ? py::bytes(encodePng(r.image)) : py::bytes(), toJson(r, o));
+    });
+  }, py::arg("brep"), py::arg("options"), py::arg("path") = "",
+     "Render a zebra/curvature/shaded PNG headless: (PNG bytes or b'' when written to path, report JSON).");
+  m.def("faceContinuity", [](const std::string& brep, int a, int b, int samplesPerEdge) {
+    return guarded([&] {
+      ContinuityOptions o;
+      o.samplesPerEdge = samplesPerEdge;
+      return continuityTuple(faceContinuity(shapeFromBrepString(brep), a, b, o));
+    });
+  }, py::arg("brep"), py::arg("faceA"), py::arg("faceB"), py::arg("samplesPerEdge") = 50,
+     "Continuity of Face<faceB> against Face<faceA> along their shared edges: (JSON, samples k x 6, edge per sample).");
+  m.def("continuityAlong", [](const std::string& faceBrep, const std::string& modelBrep, const std::vector<int>& edges) {
+    return guarded([&] { return continuityTuple(reportOnHole(faceBrep, modelBrep, edges)); });
+  }, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
+     "Like continuityReport, with the samples: (JSON, samples k x 6, edge per sample).");
   m.def("sampleModel", [](const std::string& name) {
     return guarded([&] { return py::bytes(shapeToBrepString(samples::byName(name))); });
   }, py::arg("name"), "BREP text of a built-in sample model.");

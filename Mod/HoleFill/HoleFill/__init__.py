@@ -7,6 +7,7 @@ Macro-friendly API (camelCase like FreeCAD's own):
     face, report = HoleFill.fillHole(obj.Shape, holes[0], continuity="G1")
     print(report["achieved"], report["g0"], report["g1"])
     fill = HoleFill.makeFill(obj, ["Edge3"], method="auto")     # parametric document object
+    HoleFill.renderImage(fill.Shape, "/tmp/fill.png", mode="zebra")  # headless inspection picture
 
 Shapes cross into the C++ core (module HoleFillApp) as BREP text and never come
 back modified: every result is a new shape. Reports are plain dicts with the
@@ -22,7 +23,7 @@ METHODS = ("auto", "np", "mvc", "uvtran")
 CONTINUITIES = ("G0", "G1", "G2")
 
 __all__ = ["findHoles", "fillHole", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
-           "CONTINUITIES"]
+           "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong"]
 
 
 class Hole(dict):
@@ -165,3 +166,6 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
     HoleFillError is raised."""
     from HoleFill import fill_feature
     return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc)
+
+
+from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402

@@ -1,0 +1,316 @@
+"""View-only inspection overlays (curvature colours, zebra stripes, continuity-coloured
+boundaries) on Part objects. Each overlay is one named SoSeparator in the active view's
+scene graph, drawn with a polygon offset over the object's own faces: nothing in the
+document changes, and removing the node restores the original display. Overlays follow
+their object: a recompute that changes its Shape rebuilds them, deleting it removes them.
+
+Geometry and numbers come from the core (HoleFill.inspectionMesh/curvatureMap: exact
+normals and curvatures at an adaptive tessellation). Zebra stripes are computed per pixel
+by a GLSL shader from the interpolated exact normals, so they follow the camera with no
+per-frame work in Python; it repeats the core's stripe formula (App/inspect/inspection_values.h).
+"""
+import FreeCAD
+import FreeCADGui
+from pivy import coin
+
+import HoleFill
+
+PREFIX = "HoleFillInspect"
+KINDS = ("Curvature", "Zebra", "Continuity")
+
+
+class SelectionError(Exception):
+    pass
+
+
+def targets_from_selection(allow_whole_objects=True):
+    """[(object, [face indices] or None for all faces)] from the selection; SelectionError otherwise."""
+    sel = FreeCADGui.Selection.getSelectionEx()
+    if not sel:
+        raise SelectionError("Select faces or Part objects first (e.g. a Fill result).")
+    out = []
+    for s in sel:
+        obj = s.Object
+        if obj.isDerivedFrom("Mesh::Feature"):
+            raise SelectionError("%s is a mesh: curvature maps and zebra stripes here work on B-rep faces. "
+                                 "For meshes use Mesh > Curvature plot." % obj.Label)
+        shape = getattr(obj, "Shape", None)
+        if shape is None or shape.isNull() or not shape.Faces:
+            raise SelectionError("%s has no faces to inspect." % obj.Label)
+        subs = list(s.SubElementNames)
+        faces = [int(n[4:]) for n in subs if n.startswith("Face")]
+        if subs and not faces:
+            raise SelectionError("Only edges or vertices of %s are selected: select faces or the whole object." % obj.Label)
+        if not faces and not allow_whole_objects:
+            raise SelectionError("Select faces of %s." % obj.Label)
+        out.append((obj, faces or None))
+    return out
+
+
+def _view():
+    gdoc = FreeCADGui.ActiveDocument
+    if gdoc is None or not hasattr(gdoc.ActiveView, "getSceneGraph"):
+        raise SelectionError("No 3D view is open.")
+    return gdoc.ActiveView
+
+
+def _name(kind, obj):
+    return "%s_%s_%s" % (PREFIX, kind, obj.Name)
+
+
+def nodes(kind=None):
+    """Overlay nodes now in the active view (all kinds, or one)."""
+    try:
+        root = _view().getSceneGraph()
+    except SelectionError:
+        return []
+    want = PREFIX + ("_" + kind + "_" if kind else "")
+    return [root.getChild(i) for i in range(root.getNumChildren()) if root.getChild(i).getName().getString().startswith(want)]
+
+
+def remove(kind=None, obj=None):
+    """Removes overlays (of a kind, of an object); returns how many were removed."""
+    try:
+        root = _view().getSceneGraph()
+    except SelectionError:
+        return 0
+    n = 0
+    for node in nodes(kind):
+        name = node.getName().getString()
+        if obj is None or name.endswith("_" + obj.Name):
+            root.removeChild(node)
+            n += 1
+    _WATCH.forget(kind, obj)
+    if not nodes():
+        _WATCH.detach()
+    return n
+
+
+def _surface_nodes(mesh, material_nodes):
+    sep = coin.SoSeparator()
+    pick = coin.SoPickStyle()
+    pick.style = coin.SoPickStyle.UNPICKABLE
+    offset = coin.SoPolygonOffset()  # wins the depth test over the object's own faces
+    offset.factor = -1.0
+    offset.units = -1.0
+    hints = coin.SoShapeHints()
+    hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE
+    hints.shapeType = coin.SoShapeHints.UNKNOWN_SHAPE_TYPE
+    coords = coin.SoCoordinate3()
+    pts = mesh["points"]
+    coords.point.setValues(0, len(pts), pts.astype("float32"))
+    normals = coin.SoNormal()
+    normals.vector.setValues(0, len(pts), mesh["normals"].astype("float32"))
+    nbind = coin.SoNormalBinding()
+    nbind.value = coin.SoNormalBinding.PER_VERTEX_INDEXED
+    faces = coin.SoIndexedFaceSet()
+    tris = mesh["triangles"]
+    import numpy
+    idx = numpy.hstack([tris.astype("int32"), -numpy.ones((len(tris), 1), dtype="int32")]).ravel()
+    faces.coordIndex.setValues(0, len(idx), idx)
+    for n in [pick, offset, hints, coords, normals, nbind] + list(material_nodes) + [faces]:
+        sep.addChild(n)
+    return sep
+
+
+def _add(kind, obj, node):
+    root = _view().getSceneGraph()
+    for old in nodes(kind):
+        if old.getName().getString() == _name(kind, obj):
+            root.removeChild(old)
+    node.setName(_name(kind, obj))
+    root.addChild(node)
+    _WATCH.attach()
+    return node
+
+
+def show_curvature(obj, faces, quantity="mean", percentiles=(2.0, 98.0), valueRange=None, maxNormalAngle=2.0,
+                   mesh=None):
+    """Curvature-coloured overlay of `obj` (its `faces`, or all); returns the curvatureMap dict."""
+    cmap = HoleFill.curvatureMap(obj.Shape, quantity=quantity, faces=faces, percentiles=percentiles,
+                                 valueRange=valueRange, maxNormalAngle=maxNormalAngle, mesh=mesh)
+    mat = coin.SoMaterial()
+    mat.diffuseColor.setValues(0, len(cmap["colors"]), cmap["colors"])
+    mat.specularColor = (0.15, 0.15, 0.15)
+    mat.shininess = 0.3
+    mbind = coin.SoMaterialBinding()
+    mbind.value = coin.SoMaterialBinding.PER_VERTEX_INDEXED
+    _add("Curvature", obj, _surface_nodes(cmap, [mat, mbind]))
+    _WATCH.remember("Curvature", obj, dict(faces=faces, quantity=quantity, percentiles=percentiles,
+                                           valueRange=valueRange, maxNormalAngle=maxNormalAngle))
+    return cmap
+
+
+_VERTEX = """
+varying vec3 nEye;
+varying vec3 nWorld;
+varying vec3 pEye;
+void main() {
+  nEye = normalize(gl_NormalMatrix * gl_Normal);
+  nWorld = gl_Normal;  // the overlay sits at the scene root: object space is world space
+  pEye = vec3(gl_ModelViewMatrix * gl_Vertex);
+  gl_Position = ftransform();
+}
+"""
+
+# stripe parameter s = angle(a, d) / pi; a = view ray mirrored at n (reflection) or n (isophote).
+_FRAGMENT = """
+varying vec3 nEye;
+varying vec3 nWorld;
+varying vec3 pEye;
+uniform float count;
+uniform float width;
+uniform float angle;
+uniform float isophote;
+uniform vec3 isoDirection;
+void main() {
+  vec3 n = normalize(nEye);
+  bool ortho = gl_ProjectionMatrix[3][3] > 0.5;
+  vec3 v = ortho ? vec3(0.0, 0.0, -1.0) : normalize(pEye);
+  vec3 a = isophote > 0.5 ? normalize(nWorld) : reflect(v, n);
+  vec3 d = isophote > 0.5 ? normalize(isoDirection) : vec3(cos(angle), sin(angle), 0.0);
+  float s = acos(clamp(dot(a, d), -1.0, 1.0)) / 3.14159265 * count;
+  float f = fract(s);
+  float e = max(fwidth(s), 1e-4);
+  float white = smoothstep(width - e, width + e, f) * (1.0 - smoothstep(1.0 - e, 1.0, f));
+  float c = mix(0.06, 0.97, white) * (0.8 + 0.2 * abs(n.z));
+  gl_FragColor = vec4(c, c, c, 1.0);
+}
+"""
+
+
+def zebra_shader(count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection=(0.0, 0.0, 1.0)):
+    import math
+    prog = coin.SoShaderProgram()
+    vs = coin.SoVertexShader()
+    vs.sourceType = coin.SoShaderObject.GLSL_PROGRAM
+    vs.sourceProgram = _VERTEX
+    fs = coin.SoFragmentShader()
+    fs.sourceType = coin.SoShaderObject.GLSL_PROGRAM
+    fs.sourceProgram = _FRAGMENT
+    params = []
+    for name, value in (("count", float(count)), ("width", float(width)), ("angle", math.radians(angleDeg)),
+                        ("isophote", 1.0 if isophote else 0.0)):
+        p = coin.SoShaderParameter1f()
+        p.name = name
+        p.value = value
+        params.append(p)
+    d = coin.SoShaderParameter3f()
+    d.name = "isoDirection"
+    d.value = coin.SbVec3f(*[float(x) for x in isoDirection])
+    params.append(d)
+    fs.parameter.setValues(0, len(params), params)
+    prog.shaderObject.setValues(0, 2, [vs, fs])
+    return prog
+
+
+def show_zebra(obj, faces, count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection=(0.0, 0.0, 1.0),
+               maxNormalAngle=2.0, mesh=None):
+    """Zebra overlay (reflection lines, or isophotes when isophote=True); returns the mesh dict."""
+    mesh = mesh or HoleFill.inspectionMesh(obj.Shape, faces, maxNormalAngle)
+    _add("Zebra", obj, _surface_nodes(mesh, [zebra_shader(count, width, angleDeg, isophote, isoDirection)]))
+    _WATCH.remember("Zebra", obj, dict(faces=faces, count=count, width=width, angleDeg=angleDeg, isophote=isophote,
+                                       isoDirection=isoDirection, maxNormalAngle=maxNormalAngle))
+    return mesh
+
+
+def continuity_color(g0rel, g1, g2):
+    """Green: G2 tier met; yellow: G1 strict met; orange: G0 strict met; red: not even G0."""
+    if g0rel > 1e-6:
+        return (0.9, 0.1, 0.1)
+    if g1 > 1e-3:
+        return (1.0, 0.55, 0.0)
+    if g2 > 0.1:
+        return (0.95, 0.85, 0.1)
+    return (0.1, 0.75, 0.2)
+
+
+def show_continuity(obj, report):
+    """Draws the measured boundary samples as thick lines coloured by their continuity tier."""
+    samples, edges = report["samples_along"], report["sample_edges"]
+    scale = max(report["scale"], 1e-300)
+    sep = coin.SoSeparator()
+    pick = coin.SoPickStyle()
+    pick.style = coin.SoPickStyle.UNPICKABLE
+    depth = coin.SoDepthBuffer()
+    depth.test = False  # always visible, also behind the faces it separates
+    style = coin.SoDrawStyle()
+    style.lineWidth = 5
+    light = coin.SoLightModel()
+    light.model = coin.SoLightModel.BASE_COLOR
+    mat = coin.SoMaterial()
+    mbind = coin.SoMaterialBinding()
+    mbind.value = coin.SoMaterialBinding.PER_VERTEX
+    coords = coin.SoCoordinate3()
+    lines = coin.SoLineSet()
+    pts, cols, counts = [], [], []
+    start = 0
+    for i in range(len(samples) + 1):
+        if i == len(samples) or (i > start and edges[i] != edges[start]):
+            if i - start >= 2:
+                counts.append(i - start)
+                for k in range(start, i):
+                    x, y, z, g0, g1, g2 = samples[k]
+                    pts.append((x, y, z))
+                    cols.append(continuity_color(g0 / scale, g1, g2))
+            start = i
+    coords.point.setValues(0, len(pts), pts)
+    mat.diffuseColor.setValues(0, len(cols), cols)
+    lines.numVertices.setValues(0, len(counts), counts)
+    for n in (pick, depth, style, light, mat, mbind, coords, lines):
+        sep.addChild(n)
+    _add("Continuity", obj, sep)
+    return sep
+
+
+class _Watcher:
+    """Rebuilds overlays when their object's Shape changes; removes them when it is deleted."""
+
+    def __init__(self):
+        self.attached = False
+        self.settings = {}  # (kind, object name) -> keyword arguments of show_*
+
+    def remember(self, kind, obj, kwargs):
+        self.settings[(kind, obj.Name)] = (obj, kwargs)
+
+    def forget(self, kind, obj):
+        for key in list(self.settings):
+            if (kind is None or key[0] == kind) and (obj is None or key[1] == obj.Name):
+                del self.settings[key]
+
+    def attach(self):
+        if not self.attached:
+            FreeCAD.addDocumentObserver(self)
+            self.attached = True
+
+    def detach(self):
+        if self.attached:
+            FreeCAD.removeDocumentObserver(self)
+            self.attached = False
+
+    def slotChangedObject(self, obj, prop):
+        # A Placement change moves the Shape without announcing a Shape change.
+        if prop not in ("Shape", "Placement") or not any(k[1] == obj.Name for k in self.settings):
+            return
+        from PySide2 import QtCore
+        QtCore.QTimer.singleShot(0, lambda: self.refresh(obj))
+
+    def slotDeletedObject(self, obj):
+        if any(k[1] == obj.Name for k in self.settings):
+            remove(None, obj)
+
+    def refresh(self, obj):
+        for (kind, name), (o, kw) in list(self.settings.items()):
+            if name != obj.Name:
+                continue
+            try:
+                if kind == "Curvature":
+                    show_curvature(o, **kw)
+                elif kind == "Zebra":
+                    show_zebra(o, **kw)
+            except Exception as e:  # e.g. the new shape lost the inspected faces
+                FreeCAD.Console.PrintWarning("HoleFill: %s overlay of %s removed: %s\n" % (kind, o.Label, e))
+                remove(kind, o)
+
+
+_WATCH = _Watcher()

@@ -1,0 +1,202 @@
+"""GUI test: the inspection commands on a real fill in the real FreeCAD. Curvature map (quantity
+changed in the panel, legend numbers, toggle off), zebra stripes (stripes present, they follow a
+camera change, Cancel removes them), continuity check on a Fill object and on two adjacent faces,
+an overlay following a recompute, and bad selections (nothing, a mesh, an edge only) answered
+with a clear message. Overlay nodes are asserted in the scene graph, screenshots are saved and
+checked not to be blank; the document is never modified by any of it."""
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore, QtWidgets
+
+import guiharness as h
+
+PREFIX = "HoleFillInspect"
+
+
+def overlays(kind=""):
+    root = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
+    return [root.getChild(i) for i in range(root.getNumChildren())
+            if root.getChild(i).getName().getString().startswith(PREFIX + "_" + kind)]
+
+
+def pixels(path):
+    """(share of non-background pixels, share dark, share light, share saturated) of a screenshot."""
+    from PySide2 import QtGui
+    img = QtGui.QImage(path)
+    assert not img.isNull(), path
+    n = cov = dark = light = sat = 0
+    for y in range(0, img.height(), 3):
+        for x in range(0, img.width(), 3):
+            c = QtGui.QColor(img.pixel(x, y))
+            r, g, b = c.red(), c.green(), c.blue()
+            n += 1
+            if (r, g, b) == (255, 255, 255):
+                continue
+            cov += 1
+            dark += r + g + b < 150
+            light += r + g + b > 600
+            sat += max(r, g, b) - min(r, g, b) > 80
+    return cov / n, dark / n, light / n, sat / n
+
+
+def button(which):
+    for box in FreeCADGui.getMainWindow().findChildren(QtWidgets.QDialogButtonBox):
+        b = box.button(which)
+        if box.isVisible() and b is not None and b.isVisible():
+            return b
+    return None
+
+
+def run_expecting_message(command):
+    """Runs a command that should refuse with a message box; returns the box's text."""
+    seen = []
+
+    def close_box():
+        w = QtWidgets.QApplication.activeModalWidget()
+        if isinstance(w, QtWidgets.QMessageBox):
+            seen.append(w.text())
+            w.accept()
+        elif not seen:
+            QtCore.QTimer.singleShot(100, close_box)
+
+    QtCore.QTimer.singleShot(200, close_box)
+    FreeCADGui.runCommand(command)
+    h.pump(500)
+    return seen[0] if seen else ""
+
+
+def body():
+    import HoleFill
+    import Mesh
+    FreeCADGui.activateWorkbench("HoleFillWorkbench")
+    h.pump(300)
+    doc, src = h.sample_document("GuiInspect", "Corner", "filleted_box_corner")
+    fill = HoleFill.makeFill(src, None, method="auto", continuity="G1")
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    view.fitAll()
+    h.pump(500)
+    def shapes():  # geometry, not identity: the recompute test below moves the source and back
+        return {o.Name: (round(o.Shape.Area, 6), str(o.Shape.BoundBox), len(o.Shape.Faces))
+                for o in doc.Objects if hasattr(o, "Shape")}
+    shapes_before = shapes()
+    info = {}
+
+    # 1. Curvature map on the source and the fill (whole objects), then Gaussian, then toggle off.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(src)
+    FreeCADGui.Selection.addSelection(fill)
+    FreeCADGui.runCommand("HoleFill_CurvatureMap")
+    h.pump(1500)
+    assert len(overlays("Curvature")) == 2, [n.getName().getString() for n in overlays()]
+    mw = FreeCADGui.getMainWindow()
+    combo = [c for c in mw.findChildren(QtWidgets.QComboBox) if c.isVisible() and c.findText("Gaussian curvature") >= 0][0]
+    combo.setCurrentIndex(combo.findText("Gaussian curvature"))
+    h.pump(1500)
+    labels = " ".join(w.text() for w in mw.findChildren(QtWidgets.QLabel) if w.isVisible())
+    assert "gauss from" in labels, labels
+    view.saveImage(h.shot("gui_inspect_1_curvature.png"), 1024, 768, "White")
+    cov, dark, light, sat = pixels(h.shot("gui_inspect_1_curvature.png"))
+    info["curvature_pixels"] = (cov, sat)
+    assert cov > 0.1 and sat > 0.005, (cov, sat)  # coloured (red corner spheres on neutral grey), not blank
+    button(QtWidgets.QDialogButtonBox.Ok).click()
+    h.pump(500)
+    assert len(overlays("Curvature")) == 2, "OK must keep the map in the view"
+    # The overlay follows a recompute: move the source, its map moves with it.
+    first = overlays("Curvature_Corner")[0]
+    before = [c for c in (first.getChild(i) for i in range(first.getNumChildren())) if c.isOfType(
+        __import__("pivy").coin.SoCoordinate3.getClassTypeId())][0].point[0][0]
+    src.Placement.Base = FreeCAD.Vector(5, 0, 0)
+    doc.recompute()
+    h.pump(1500)
+    node = overlays("Curvature_Corner")[0]
+    after = [c for c in (node.getChild(i) for i in range(node.getNumChildren())) if c.isOfType(
+        __import__("pivy").coin.SoCoordinate3.getClassTypeId())][0].point[0][0]
+    info["recompute_shift"] = after - before
+    assert abs(after - before - 5.0) < 1e-3, (before, after)
+    src.Placement.Base = FreeCAD.Vector(0, 0, 0)
+    doc.recompute()
+    h.pump(1000)
+    FreeCADGui.runCommand("HoleFill_CurvatureMap")  # toggle off
+    h.pump(300)
+    assert not overlays("Curvature"), "the curvature map survived its toggle"
+
+    # 2. Zebra on the source and the fill: stripes, following the camera; Cancel removes them.
+    FreeCADGui.runCommand("HoleFill_ZebraStripes")
+    h.pump(1500)
+    assert len(overlays("Zebra")) == 2
+    view.saveImage(h.shot("gui_inspect_2_zebra_iso.png"), 1024, 768, "White")
+    cov, dark, light, sat = pixels(h.shot("gui_inspect_2_zebra_iso.png"))
+    info["zebra_pixels"] = (cov, dark, light)
+    assert dark > 0.05 and light > 0.05, (dark, light)
+    view.viewTop()
+    h.pump(500)
+    view.saveImage(h.shot("gui_inspect_3_zebra_top.png"), 1024, 768, "White")
+    from PySide2 import QtGui
+    a, b = QtGui.QImage(h.shot("gui_inspect_2_zebra_iso.png")), QtGui.QImage(h.shot("gui_inspect_3_zebra_top.png"))
+    assert a != b, "the stripes did not change with the view"
+    view.viewIsometric()
+    button(QtWidgets.QDialogButtonBox.Cancel).click()
+    h.pump(500)
+    assert not overlays("Zebra"), "Cancel left the zebra overlay"
+
+    # 3. Continuity check on the Fill object: a panel with numbers and a coloured boundary.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(fill)
+    FreeCADGui.runCommand("HoleFill_ContinuityCheck")
+    h.pump(1500)
+    assert len(overlays("Continuity")) == 1
+    table = [t for t in mw.findChildren(QtWidgets.QTableWidget) if t.isVisible()][0]
+    info["fill_g1"] = table.item(0, 2).text()
+    assert float(table.item(0, 2).text()) <= 1e-3, table.item(0, 2).text()  # the G1 fill is G1
+    view.saveImage(h.shot("gui_inspect_4_continuity_fill.png"), 1024, 768, "White")
+    assert pixels(h.shot("gui_inspect_4_continuity_fill.png"))[3] > 0.001
+    button(QtWidgets.QDialogButtonBox.Close).click()
+    h.pump(500)
+    assert not overlays("Continuity")
+    # ... and on two adjacent faces of the source: a plane against a fillet is G1, not G2.
+    import Part
+    shape = src.Shape
+    pair = None
+    for i, f in enumerate(shape.Faces):
+        for j, g in enumerate(shape.Faces):
+            if i < j and f.Surface.TypeId != g.Surface.TypeId and any(e.isSame(k) for e in f.Edges for k in g.Edges):
+                pair = ("Face%d" % (i + 1), "Face%d" % (j + 1))
+                break
+        if pair:
+            break
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(src, list(pair))
+    FreeCADGui.runCommand("HoleFill_ContinuityCheck")
+    h.pump(1000)
+    table = [t for t in mw.findChildren(QtWidgets.QTableWidget) if t.isVisible()][0]
+    info["pair"] = pair
+    info["pair_g1_g2"] = (table.item(0, 2).text(), table.item(0, 3).text())
+    assert float(table.item(0, 2).text()) < 1e-6 and float(table.item(0, 3).text()) > 0.1, info["pair_g1_g2"]
+    button(QtWidgets.QDialogButtonBox.Close).click()
+    h.pump(300)
+
+    # 4. Bad selections: a clear message, no overlay, no panel.
+    FreeCADGui.Selection.clearSelection()
+    info["msg_none"] = run_expecting_message("HoleFill_CurvatureMap")
+    assert "Select faces" in info["msg_none"], info["msg_none"]
+    mesh = doc.addObject("Mesh::Feature", "Scan")
+    mesh.Mesh = Mesh.Mesh(Part.makeBox(1, 1, 1).tessellate(0.1))
+    doc.recompute()
+    FreeCADGui.Selection.addSelection(mesh)
+    info["msg_mesh"] = run_expecting_message("HoleFill_ZebraStripes")
+    assert "is a mesh" in info["msg_mesh"], info["msg_mesh"]
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(src, "Edge1")
+    info["msg_edge"] = run_expecting_message("HoleFill_CurvatureMap")
+    assert "Only edges" in info["msg_edge"], info["msg_edge"]
+    info["msg_cont"] = run_expecting_message("HoleFill_ContinuityCheck")
+    assert "two adjacent faces" in info["msg_cont"], info["msg_cont"]
+    assert not overlays(), [n.getName().getString() for n in overlays()]
+    doc.removeObject("Scan")
+    doc.recompute()
+    assert shapes() == shapes_before, (shapes(), shapes_before)
+    h.finish(True, **info)
+
+
+h.run(body, 500)
