@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Peer benchmarks (not part of ctest): builds, then runs
 #  1. holefill_bench_params: parameter error of UVTran vs MVC vs NP on the synthetic test split;
+#     holefill_bench_inspect: exact curvature per sample vs OCCT SLProps (1M samples), tessellation and render times;
 #  2. tests/bench/bench_fill.py in freecadcmd: HoleFill NP/MVC/UVTran/auto vs FreeCAD Surface
 #     Filling (GeomPlate) on the same holes, asked for G1 and for G2, in one run.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
@@ -10,6 +11,8 @@ set -euo pipefail
 export BENCH_OUT="$root/bench-out"
 mkdir -p "$BENCH_OUT"
 "$build/tests/holefill_bench_params" "${BENCH_PARAM_HOLES:-1000}" | tee "$BENCH_OUT/bench_params.md"
+echo
+"$build/tests/holefill_bench_inspect" "${BENCH_INSPECT_SAMPLES:-1000000}" | tee "$BENCH_OUT/bench_inspect.md"
 echo
 (
   . tests/fcenv.sh "$build/Mod/HoleFill"

@@ -2,6 +2,8 @@
 bundled sample with NP, MVC and UVTran at G1, and at G2 with NP and UVTran, keeps the NP/G1 fill as a
 parametric Fill object in a FreeCAD document, and writes to $HOLEFILL_DEMO_OUT:
 <sample>.FCStd, <sample>.step (the sewn model), <sample>.json (reports) and summary.json,
+zebra pictures of the sewn NP fills at G1 and G2 (<sample>_zebra_G1.png, _G2.png) and a mean
+curvature map of the G2 one (<sample>_mean_G2.png), rendered headless by the core,
 then prints the continuity table."""
 import json
 import os
@@ -31,6 +33,10 @@ for name in NAMES:
         rows.append((name, rep))
         if (method, cont) == ("np", "G1") and rep["status"] != "failed":
             sewn.exportStep(os.path.join(OUT, name + ".step"))
+        if method == "np" and rep["status"] != "failed":
+            HoleFill.renderImage(sewn, os.path.join(OUT, "%s_zebra_%s.png" % (name, cont)), mode="zebra", stripes=20)
+            if cont == "G2":
+                HoleFill.renderImage(sewn, os.path.join(OUT, "%s_mean_G2.png" % name), mode="curvature", quantity="mean")
     doc = FreeCAD.newDocument(name)
     src = doc.addObject("Part::Feature", "Model")
     src.Shape = shape
