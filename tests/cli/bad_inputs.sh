@@ -35,5 +35,17 @@ expect_error "edges not on a hole" 1 fill "$T/panel_6_sided.brep" --out "$T/o.br
 expect_error "hole out of range" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --hole 7
 expect_error "no hole: closed box" 1 fill "$T/closed_box.brep" --out "$T/o.brep"
 expect_error "unknown verb" 1 frobnicate
+# render: bad inputs and options say so in one line and write no picture.
+expect_error "render corrupt brep" 1 render "$T/corrupt.brep" --out "$T/o.png"
+expect_error "render bad mode" 1 render "$T/panel_6_sided.brep" --out "$T/o.png" --mode xray
+expect_error "render bad quantity" 1 render "$T/panel_6_sided.brep" --out "$T/o.png" --mode curvature --quantity wobble
+expect_error "render bad size" 1 render "$T/panel_6_sided.brep" --out "$T/o.png" --size huge
+expect_error "render bad view" 1 render "$T/panel_6_sided.brep" --out "$T/o.png" --view 1,2
+expect_error "render face out of range" 1 render "$T/panel_6_sided.brep" --out "$T/o.png" --faces 99
+expect_error "render unwritable output" 1 render "$T/panel_6_sided.brep" --out "$T/no/such/dir/o.png"
+[ ! -e "$T/o.png" ] || { fail=$((fail+1)); echo "FAIL render: a failed render left $T/o.png"; }
+# ... and a good one writes a real PNG and a JSON report.
+if "$H" render "$T/closed_box.brep" --out "$T/ok.png" --json >"$T/r.json" && head -c 8 "$T/ok.png" | grep -q PNG \
+   && grep -q '"mode":"zebra"' "$T/r.json"; then pass=$((pass+1)); else fail=$((fail+1)); echo "FAIL render ok"; fi
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
