@@ -94,7 +94,7 @@ struct GBuffer {
                             b1(depth.size()), b2(depth.size()), tri(depth.size(), -1) {}
 };
 
-void rasterize(const InspectionMesh& m, const Camera& cam, const std::vector<Eigen::Vector3d>& s, int rowBegin, int rowEnd,
+void rasterize(const InspectionMesh& m, const std::vector<Eigen::Vector3d>& s, int rowBegin, int rowEnd,
                GBuffer& g) {
   for (Eigen::Index t = 0; t < m.triangles.rows(); ++t) {
     const Eigen::Vector3d &a = s[static_cast<size_t>(m.triangles(t, 0))], &b = s[static_cast<size_t>(m.triangles(t, 1))],
@@ -210,7 +210,7 @@ RenderResult renderInspection(const InspectionMesh& m, const RenderOptions& o) {
   GBuffer g(W, H);
   std::vector<Eigen::Vector3d> screen(static_cast<size_t>(m.fields.size()));
   for (Eigen::Index i = 0; i < m.fields.size(); ++i) screen[static_cast<size_t>(i)] = cam.project(m.fields.points.row(i).transpose());
-  inBands(H, [&](int y0, int y1) { rasterize(m, cam, screen, y0, y1, g); });
+  inBands(H, [&](int y0, int y1) { rasterize(m, screen, y0, y1, g); });
   std::vector<std::uint8_t> edgeMask(static_cast<size_t>(W) * H, 0);
   if (o.edges) drawEdges(m, cam, g, ss, edgeMask);
   const Eigen::Vector3d stripeDir = stripeDirection(o.stripes, cam.view, cam.up);
