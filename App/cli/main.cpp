@@ -24,6 +24,8 @@
 #include "geometry/error.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
+#include "mesh/mesh_hole_fill.h"
+#include "mesh/mesh_io.h"
 
 using namespace holefill;
 
@@ -40,6 +42,9 @@ const char* kUsage =
     "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
     "                [--isophote-direction x,y,z] [--direction x,y,z] [--scale-percentile LO,HI | --scale-range LO,HI]\n"
     "                [--symmetric auto|yes|no] [--normal-angle DEG] [--edges 0|1] [--legend 0|1] [--json]\n"
+    "  holefill mesh-fill MESH --out OUT [--max-boundary N] [--holes 0,3,..] [--no-refine] [--fair-iterations K]\n"
+    "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
+    "  holefill mesh-holes MESH [--json]\n"
     "  holefill samples DIR        write the bundled sample models as .brep\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
@@ -54,7 +59,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes"};
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine"};
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -201,6 +206,61 @@ int cmdRender(const Args& a) {
   return 0;
 }
 
+std::vector<int> indexList(const std::string& list, const std::string& what) {
+  std::vector<int> r;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) r.push_back(static_cast<int>(number(item, what)));
+  return r;
+}
+
+int cmdMeshHoles(const Args& a) {
+  if (a.input.empty()) throw Error("mesh-holes: no input file");
+  const MeshHoleReport d = findMeshHoles(readMesh(a.input));
+  if (a.has("--json")) {
+    std::cout << "[";
+    for (size_t i = 0; i < d.holes.size(); ++i)
+      std::cout << (i ? "," : "") << "{\"hole\":" << i << ",\"boundary_vertices\":" << d.holes[i].loop.size()
+                << ",\"length\":" << d.holes[i].length << ",\"fillable\":" << (d.holes[i].fillable ? "true" : "false") << "}";
+    std::cout << "]\n";
+    return 0;
+  }
+  std::printf("%-5s %-8s %-12s %s\n", "hole", "vertices", "length", "note");
+  for (size_t i = 0; i < d.holes.size(); ++i)
+    std::printf("%-5zu %-8zu %-12.6g %s\n", i, d.holes[i].loop.size(), d.holes[i].length, d.holes[i].message.c_str());
+  for (const auto& w : d.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (d.holes.empty()) std::printf("no holes: the mesh is closed\n");
+  return 0;
+}
+
+// Exit 0 when every asked-for hole was filled, 2 when none was (nothing written), 3 when some
+// stayed open (the result is written and the report says which and why).
+int cmdMeshFill(const Args& a) {
+  if (a.input.empty()) throw Error("mesh-fill: no input file");
+  if (!a.has("--out")) throw Error("mesh-fill: --out OUT is required");
+  MeshFillOptions o;
+  if (a.has("--max-boundary")) o.maxBoundary = static_cast<int>(number(a.get("--max-boundary"), "--max-boundary"));
+  if (a.has("--holes")) o.holes = indexList(a.get("--holes"), "--holes");
+  if (a.has("--fair-iterations")) o.fairIterations = static_cast<int>(number(a.get("--fair-iterations"), "--fair-iterations"));
+  o.refine = !a.has("--no-refine");
+  const MeshFillResult r = fillMeshHoles(readMesh(a.input), o);
+  const int code = r.filledHoles == 0 && r.openHoles > 0 ? 2 : (r.openHoles > 0 ? 3 : 0);
+  if (code != 2) writeMesh(r.mesh, a.get("--out"));
+  if (a.has("--json")) {
+    std::cout << r.toJson() << "\n";
+  } else {
+    std::printf("%-5s %-8s %-6s %-6s %-7s %-7s %-7s %-8s %s\n", "hole", "boundary", "+verts", "+tris", "q min", "q mean",
+                "q max", "seconds", "note");
+    for (const MeshHoleFill& f : r.fills)
+      std::printf("%-5d %-8d %-6d %-6d %-7.4f %-7.4f %-7.4f %-8.3f %s\n", f.hole, f.boundaryVertices, f.newVertices,
+                  f.newTriangles, f.minQuality, f.meanQuality, f.maxQuality, f.seconds, f.message.c_str());
+    std::printf("%d of %zu holes filled, %s, %.3f s\n", r.filledHoles, r.fills.size(), r.closed ? "closed" : "still open", r.seconds);
+  }
+  for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (code == 2) std::fprintf(stderr, "holefill: no hole was filled; nothing written\n");
+  return code;
+}
+
 int cmdSamples(const Args& a) {
   if (a.input.empty()) throw Error("samples: no output folder");
   for (const auto& n : samples::names()) {
@@ -232,6 +292,8 @@ int main(int argc, char** argv) {
     if (a.verb == "fill") return cmdFill(a);
     if (a.verb == "samples") return cmdSamples(a);
     if (a.verb == "render") return cmdRender(a);
+    if (a.verb == "mesh-fill") return cmdMeshFill(a);
+    if (a.verb == "mesh-holes") return cmdMeshHoles(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

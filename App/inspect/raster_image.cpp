@@ -1,6 +1,5 @@
 #include "inspect/raster_image.h"
 
-#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "geometry/atomic_file.h"
 #include "geometry/error.h"
 
 namespace holefill {
@@ -122,20 +122,7 @@ std::string encodePng(const RasterImage& im) {
   return out;
 }
 
-void writePng(const RasterImage& image, const std::string& path) {
-  const std::string bytes = encodePng(image);
-  const std::string tmp = path + ".tmp" + std::to_string(getpid()) + ".png";
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  bool ok = f != nullptr;
-  if (f) {
-    ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    ok = (std::fclose(f) == 0) && ok;
-  }
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': check that the folder exists and is writable");
-  }
-}
+void writePng(const RasterImage& image, const std::string& path) { writeFileAtomically(path, encodePng(image)); }
 
 int textWidth(const std::string& text, int scale) { return static_cast<int>(text.size()) * 6 * scale; }
 

@@ -1,0 +1,204 @@
+#include "mesh/mesh_hole_fill.h"
+
+#include <chrono>
+#include <unordered_set>
+
+#include "geometry/error.h"
+#include "geometry/json_writer.h"
+#include "mesh/mesh_topology.h"
+
+namespace holefill {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (mesh.triangles.rows() == 0) throw Error("the mesh has no triangles; there is nothing to fill");
+  MeshFillResult result;
+  result.detection = findMeshHoles(mesh);
+  const MeshHoleReport& detection = result.detection;
+  result.warnings = detection.warnings;
+  const MeshTopology topo(mesh);
+
+  std::vector<bool> wanted(detection.holes.size(), options.holes.empty());
+  for (int h : options.holes) {
+    if (h < 0 || h >= static_cast<int>(detection.holes.size()))
+      throw Error("hole " + std::to_string(h) + " does not exist; the mesh has " + std::to_string(detection.holes.size()) +
+                  " holes (0-based)");
+    wanted[h] = true;
+  }
+
+  // Per vertex: area-weighted normal sum and mean edge length, both in the surrounding mesh.
+  const Eigen::Index nv = mesh.vertices.rows();
+  std::vector<Eigen::Vector3d> normalSum(nv, Eigen::Vector3d::Zero());
+  std::vector<double> edgeSum(nv, 0);
+  std::vector<int> edgeCount(nv, 0);
+  auto point = [&](int v) { return Eigen::Vector3d(mesh.vertices.row(v).transpose()); };
+  auto orientedNormal = [&](int t) {
+    const int a = mesh.triangles(t, 0), b = topo.nextVertex(t, a), c = topo.nextVertex(t, b);
+    return Eigen::Vector3d((point(b) - point(a)).cross(point(c) - point(a)));
+  };
+  for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {
+    const Eigen::Vector3d n = orientedNormal(static_cast<int>(t));
+    for (int k = 0; k < 3; ++k) normalSum[mesh.triangles(t, k)] += n;
+  }
+  for (const auto& [key, e] : topo.edges()) {
+    const double len = (point(e.a) - point(e.b)).norm();
+    edgeSum[e.a] += len; edgeSum[e.b] += len;
+    ++edgeCount[e.a]; ++edgeCount[e.b];
+  }
+
+  std::vector<Eigen::Vector3d> newPoints;
+  std::vector<Eigen::Vector3i> newTriangles;
+  std::unordered_set<std::uint64_t> addedEdges;
+  auto joined = [&](int u, int v) { return topo.hasEdge(u, v) || addedEdges.count(MeshTopology::key(u, v)) > 0; };
+
+  const int holeCount = static_cast<int>(detection.holes.size());
+  for (int h = 0; h < holeCount; ++h) {
+    const MeshHole& hole = detection.holes[h];
+    MeshHoleFill fill;
+    fill.hole = h;
+    fill.boundaryVertices = static_cast<int>(hole.loop.size());
+    fill.length = hole.length;
+    fill.message = hole.message;
+    const auto holeStart = std::chrono::steady_clock::now();
+    auto skip = [&](const std::string& why) { fill.message = why + (hole.message.empty() ? "" : " (" + hole.message + ")"); };
+    if (result.cancelled) {
+      skip("not filled: cancelled");
+    } else if (!hole.fillable) {
+      fill.message = hole.message;
+    } else if (!wanted[h]) {
+      skip("not filled: not asked for");
+    } else if (options.maxBoundary > 0 && fill.boundaryVertices > options.maxBoundary) {
+      skip("not filled: " + std::to_string(fill.boundaryVertices) + " boundary vertices exceed --max-boundary " +
+           std::to_string(options.maxBoundary));
+    } else {
+      try {
+        const std::vector<int>& loop = hole.loop;
+        const int n = static_cast<int>(loop.size());
+        HolePatch patch;
+        patch.boundaryCount = n;
+        std::vector<Eigen::Vector3d> sums(n), across(n);
+        for (int i = 0; i < n; ++i) {
+          patch.points.push_back(point(loop[i]));
+          sums[i] = normalSum[loop[i]];
+          patch.scale.push_back(edgeCount[loop[i]] ? edgeSum[loop[i]] / edgeCount[loop[i]] : 0.0);
+          across[i] = orientedNormal(hole.edgeTriangles[i]).normalized();
+        }
+        patch.outsideEdge = [&](int i, int j) { return joined(loop[i], loop[j]); };
+        const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, options.triangulation);
+        patch.triangles = tri.triangles;
+        fill.sigma = tri.sigma;
+        if (options.refine) {
+          const RefinementResult ref = refinePatch(patch, options.refinement);
+          fill.splits = ref.splits;
+          fill.swaps = ref.swaps;
+          if (ref.capped) fill.message += std::string(fill.message.empty() ? "" : "; ") + "refinement stopped at a safety cap";
+        }
+        const TangentialSmoothingResult smooth = smoothTangentially(patch, options.smoothing, options.refinement);
+        fill.swaps += smooth.swaps;
+        BilateralOptions fairing = options.fairing;
+        if (options.fairIterations >= 0) fairing.iterations = options.fairIterations;
+        bilateralFair(patch, fairing);
+
+        const int base = static_cast<int>(nv + newPoints.size());
+        auto global = [&](int i) { return i < n ? loop[i] : base + (i - n); };
+        for (size_t i = n; i < patch.points.size(); ++i) {
+          HF_CHECK(patch.points[i].allFinite(), "a new vertex is not finite");
+          newPoints.push_back(patch.points[i]);
+        }
+        double sum = 0;
+        fill.minQuality = 1;
+        for (const auto& t : patch.triangles) {
+          const double q = triangleQuality(patch.points[t[0]], patch.points[t[1]], patch.points[t[2]]);
+          fill.minQuality = std::min(fill.minQuality, q);
+          fill.maxQuality = std::max(fill.maxQuality, q);
+          fill.goodShare += q >= 0.7 ? 1 : 0;
+          sum += q;
+          newTriangles.emplace_back(global(t[0]), global(t[1]), global(t[2]));
+          for (int k = 0; k < 3; ++k) addedEdges.insert(MeshTopology::key(global(t[k]), global(t[(k + 1) % 3])));
+        }
+        fill.newVertices = static_cast<int>(patch.points.size()) - n;
+        fill.newTriangles = static_cast<int>(patch.triangles.size());
+        fill.meanQuality = sum / fill.newTriangles;
+        fill.goodShare /= fill.newTriangles;
+        fill.filled = true;
+      } catch (const Error& e) {
+        fill.message = std::string("not filled: ") + e.what();
+      }
+    }
+    fill.seconds = secondsSince(holeStart);
+    (fill.filled ? result.filledHoles : result.openHoles)++;
+    result.fills.push_back(std::move(fill));
+    if (options.progress && !result.cancelled && !options.progress(double(h + 1) / holeCount)) result.cancelled = true;
+  }
+
+  result.mesh.vertices.resize(nv + static_cast<Eigen::Index>(newPoints.size()), 3);
+  result.mesh.vertices.topRows(nv) = mesh.vertices;
+  for (size_t i = 0; i < newPoints.size(); ++i) result.mesh.vertices.row(nv + i) = newPoints[i].transpose();
+  const Eigen::Index nt = mesh.triangles.rows();
+  result.mesh.triangles.resize(nt + static_cast<Eigen::Index>(newTriangles.size()), 3);
+  result.mesh.triangles.topRows(nt) = mesh.triangles;
+  for (size_t i = 0; i < newTriangles.size(); ++i) result.mesh.triangles.row(nt + i) = newTriangles[i].transpose();
+
+  result.closed = countBoundaryEdges(result.mesh) == 0;
+  result.closedWhenWelded =
+      result.closed || countBoundaryEdges(result.mesh, weldMap(result.mesh.vertices, 1e-9 * boundingDiagonal(mesh.vertices))) == 0;
+  result.seconds = secondsSince(start);
+  return result;
+}
+
+std::string MeshFillResult::toJson() const {
+  JsonWriter w;
+  w.beginObject();
+  w.field("status", filledHoles > 0 || openHoles == 0 ? "ok" : "nothing filled");
+  w.field("vertices", static_cast<int>(mesh.vertices.rows()));
+  w.field("triangles", static_cast<int>(mesh.triangles.rows()));
+  w.field("holes", static_cast<int>(fills.size()));
+  w.field("filled", filledHoles);
+  w.field("open", openHoles);
+  w.field("closed", closed);
+  w.field("closed_when_welded", closedWhenWelded);
+  w.field("cancelled", cancelled);
+  w.field("seconds", seconds);
+  w.key("topology").beginObject();
+  w.field("boundary_edges", detection.boundaryEdges);
+  w.field("non_manifold_edges", detection.nonManifoldEdges);
+  w.field("inconsistent_edges", detection.inconsistentEdges);
+  w.field("singular_vertices", detection.singularVertices);
+  w.field("components", detection.components);
+  w.field("duplicate_vertex_splits", detection.duplicateSplits);
+  w.endObject();
+  w.field("warnings", warnings);
+  w.key("hole_fills").beginArray();
+  for (const MeshHoleFill& f : fills) {
+    w.beginObject();
+    w.field("hole", f.hole);
+    w.field("boundary_vertices", f.boundaryVertices);
+    w.field("length", f.length);
+    w.field("filled", f.filled);
+    w.field("message", f.message);
+    w.field("new_vertices", f.newVertices);
+    w.field("new_triangles", f.newTriangles);
+    w.field("min_quality", f.minQuality);
+    w.field("max_quality", f.maxQuality);
+    w.field("mean_quality", f.meanQuality);
+    w.field("share_quality_0_7", f.goodShare);
+    w.field("sigma_deg", f.sigma * 180 / M_PI);
+    w.field("splits", f.splits);
+    w.field("swaps", f.swaps);
+    w.field("seconds", f.seconds);
+    w.endObject();
+  }
+  w.endArray();
+  w.endObject();
+  return w.str();
+}
+
+}  // namespace holefill

@@ -1,0 +1,67 @@
+// Filling the holes of a triangle mesh by the pipeline of Hu et al., "Filling Holes in
+// Triangular Meshes in Engineering": detection (mesh_holes.h), triangulation by the modified
+// minimum-angle principle (min_angle_triangulation.h), density refinement with Delaunay-like
+// relaxation (patch_refinement.h) and bilateral fairing of the new vertices
+// (bilateral_fairing.h). Only vertices and triangles are added: the input's vertices and
+// triangles come first in the result, bit for bit and in their order. Each hole is filled
+// on its own; one that cannot be filled is reported and left open, the rest still are.
+// The per-hole report has the columns of the paper's Table 1 (new vertices and triangles,
+// Field's quality min/max/mean) plus time.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesh/bilateral_fairing.h"
+#include "mesh/mesh_holes.h"
+#include "mesh/min_angle_triangulation.h"
+#include "mesh/patch_refinement.h"
+#include "mesh/tangential_smoothing.h"
+
+namespace holefill {
+
+struct MeshFillOptions {
+  int maxBoundary = 0;                   // holes with more boundary vertices stay open (0: no limit)
+  std::vector<int> holes;                // indices into findMeshHoles(mesh).holes; empty: every fillable hole
+  bool refine = true;                    // density refinement (off: the bare minimum-angle triangulation)
+  int fairIterations = -1;               // −1: fairing.iterations; 0 switches fairing off
+  MinAngleOptions triangulation;
+  RefinementOptions refinement;
+  TangentialSmoothingOptions smoothing;  // our addition between refinement and fairing (see its header)
+  BilateralOptions fairing;
+  std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel (filled holes are kept)
+};
+
+struct MeshHoleFill {
+  int hole = -1;                         // index into MeshFillResult::detection.holes
+  int boundaryVertices = 0;
+  double length = 0;
+  bool filled = false;
+  std::string message;                   // why not, or notes from detection
+  int newVertices = 0, newTriangles = 0;
+  double minQuality = 0, maxQuality = 0, meanQuality = 0;
+  double goodShare = 0;                  // share of new triangles with quality ≥ 0.7
+  double sigma = 0;                      // the triangulation's normal threshold (radians)
+  int splits = 0, swaps = 0;
+  double seconds = 0;
+};
+
+struct MeshFillResult {
+  TriangleMesh mesh;                     // input first, bit for bit, then the new vertices and triangles
+  MeshHoleReport detection;
+  std::vector<MeshHoleFill> fills;       // one per detected hole, in detection order
+  int filledHoles = 0, openHoles = 0;    // open: detected and not filled (skipped, failed or not asked for)
+  bool closed = false;                   // no boundary edge left
+  bool closedWhenWelded = false;         // no boundary edge left once coincident (duplicated) vertices are welded
+  bool cancelled = false;
+  double seconds = 0;
+  std::vector<std::string> warnings;
+  std::string toJson() const;
+};
+
+// Throws holefill::Error for an invalid mesh (NaN, bad indices), an empty one, a hole index
+// out of range; broken topology only leaves the affected holes open, with a message.
+MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& options = {});
+
+}  // namespace holefill

@@ -1,0 +1,48 @@
+// Edge adjacency of a triangle mesh as the hole pipeline reads it: every undirected edge
+// with the triangles on it, edge-connected components, and a consistent orientation per
+// component (Hu et al., section II: "a mesh is oriented if all its triangles are consistently
+// oriented"). Input meshes often are not; rather than refuse them, the topology records which
+// triangles must be read reversed so each orientable component agrees with its majority, and
+// every query below (nextVertex) answers in that corrected orientation. The input is untouched.
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "mesh/triangle_mesh.h"
+
+namespace holefill {
+
+class MeshTopology {
+public:
+  struct Edge {
+    int a, b;                            // a < b
+    std::vector<int> triangles;
+  };
+
+  explicit MeshTopology(const TriangleMesh& mesh);
+
+  // The vertex after v in triangle t, in the corrected orientation.
+  int nextVertex(int t, int v) const;
+  // Throws holefill::Error when the edge does not exist; hasEdge asks first.
+  const Edge& edge(int u, int v) const;
+  bool hasEdge(int u, int v) const { return edges_.count(key(u, v)) > 0; }
+  const std::unordered_map<std::uint64_t, Edge>& edges() const { return edges_; }
+  static std::uint64_t key(int u, int v) {
+    const auto lo = static_cast<std::uint64_t>(std::min(u, v)), hi = static_cast<std::uint64_t>(std::max(u, v));
+    return (hi << 32) | lo;
+  }
+
+  std::vector<bool> flipped;             // per triangle
+  std::vector<int> component;            // per triangle
+  std::vector<bool> orientable;          // per component
+  int components = 0, nonOrientableComponents = 0;
+  int nonManifoldEdges = 0, inconsistentEdges = 0, unusedVertices = 0;
+
+private:
+  const TriangleMesh& mesh_;
+  std::unordered_map<std::uint64_t, Edge> edges_;
+};
+
+}  // namespace holefill

@@ -1,0 +1,28 @@
+// Known meshes for tests, the demo and the benchmark's ground-truth holes: a triangulated
+// plane, an icosphere, an open tube, and cutting a hole out of any of them. The removed
+// triangles are kept, so a fill can be measured against the surface that was there.
+#pragma once
+
+#include <functional>
+
+#include "mesh/triangle_mesh.h"
+
+namespace holefill::samples {
+
+// nx × ny squares of size h in the z = 0 plane, each split along a diagonal that alternates,
+// so no vertex has a preferred direction.
+TriangleMesh gridPlane(int nx, int ny, double h = 1.0);
+// Loop-subdivided icosahedron projected onto the sphere of the given radius (20·4^level triangles).
+TriangleMesh icosphere(int level, double radius = 1.0);
+// Open cylinder of radius r around z from 0 to height: `segments` around, `rings` rows;
+// squash < 1 scales y, for an elliptic cross-section.
+TriangleMesh tube(int segments, int rings, double radius, double height, double squash = 1.0);
+
+struct CutResult {
+  TriangleMesh mesh;                     // what is left, unused vertices removed
+  TriangleMesh removed;                  // the cut-out triangles (ground truth)
+};
+// Removes every triangle whose centroid satisfies `inside`.
+CutResult cutHole(const TriangleMesh& mesh, const std::function<bool(const Eigen::Vector3d&)>& inside);
+
+}  // namespace holefill::samples

@@ -1,0 +1,297 @@
+#include "mesh/mesh_hole_fill.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/error.h"
+#include "mesh/sample_meshes.h"
+
+using namespace holefill;
+
+namespace {
+
+// The new part of a fill: vertices after the input's, triangles after the input's.
+double meanNewQuality(const MeshFillResult& r, const TriangleMesh& input, double* minQ = nullptr) {
+  double sum = 0, lo = 1;
+  const Eigen::Index n = r.mesh.triangles.rows() - input.triangles.rows();
+  for (Eigen::Index t = input.triangles.rows(); t < r.mesh.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = r.mesh.triangles.row(t).transpose();
+    const double q = triangleQuality(r.mesh.vertices.row(f[0]).transpose(), r.mesh.vertices.row(f[1]).transpose(),
+                                     r.mesh.vertices.row(f[2]).transpose());
+    sum += q;
+    lo = std::min(lo, q);
+  }
+  if (minQ) *minQ = lo;
+  return n ? sum / n : 0;
+}
+
+void expectInputKept(const MeshFillResult& r, const TriangleMesh& input) {
+  ASSERT_GE(r.mesh.vertices.rows(), input.vertices.rows());
+  ASSERT_GE(r.mesh.triangles.rows(), input.triangles.rows());
+  // Bit for bit: exact equality, not a tolerance.
+  EXPECT_TRUE((r.mesh.vertices.topRows(input.vertices.rows()).array() == input.vertices.array()).all());
+  EXPECT_TRUE((r.mesh.triangles.topRows(input.triangles.rows()).array() == input.triangles.array()).all());
+}
+
+// Every edge of the result has two triangles running it in opposite directions.
+void expectClosedAndOriented(const TriangleMesh& m) {
+  std::map<std::pair<int, int>, int> directed;
+  for (Eigen::Index t = 0; t < m.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) ++directed[{m.triangles(t, k), m.triangles(t, (k + 1) % 3)}];
+  for (const auto& [e, c] : directed) {
+    EXPECT_EQ(c, 1) << "edge " << e.first << "-" << e.second << " is used twice in one direction";
+    EXPECT_EQ(directed.count({e.second, e.first}), 1u) << "edge " << e.first << "-" << e.second << " is a boundary";
+  }
+}
+
+samples::CutResult planeWithPolygonHole(const std::vector<Eigen::Vector2d>& polygon, int n = 40) {
+  const TriangleMesh plane = samples::gridPlane(n, n, 1.0 / n);
+  return samples::cutHole(plane, [&](const Eigen::Vector3d& c) {
+    bool in = false;  // even-odd rule
+    for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+      if ((polygon[i].y() > c.y()) != (polygon[j].y() > c.y()) &&
+          c.x() < (polygon[j].x() - polygon[i].x()) * (c.y() - polygon[i].y()) / (polygon[j].y() - polygon[i].y()) + polygon[i].x())
+        in = !in;
+    return in;
+  });
+}
+
+}  // namespace
+
+TEST(MeshHoleFill, PlanarHoleStaysInItsPlane) {
+  const auto cut = planeWithPolygonHole({{0.2, 0.25}, {0.8, 0.2}, {0.75, 0.7}, {0.5, 0.85}, {0.25, 0.7}});
+  const MeshFillResult r = fillMeshHoles(cut.mesh);
+  // The plane's outer border is a loop too: the largest, and filled like any other.
+  ASSERT_EQ(r.fills.size(), 2u);
+  EXPECT_EQ(r.filledHoles, 2);
+  expectInputKept(r, cut.mesh);
+  for (Eigen::Index v = cut.mesh.vertices.rows(); v < r.mesh.vertices.rows(); ++v) EXPECT_EQ(r.mesh.vertices(v, 2), 0.0);
+  const MeshHoleFill& inner = r.fills[1];
+  EXPECT_GT(inner.newVertices, 10);
+  EXPECT_GT(inner.meanQuality, 0.9);
+  EXPECT_GT(inner.minQuality, 0.45);
+  EXPECT_TRUE(r.closed);
+  expectClosedAndOriented(r.mesh);
+}
+
+TEST(MeshHoleFill, ConcaveHole) {
+  // A C shape: its opening is concave against the ears on the other side.
+  const auto cut = planeWithPolygonHole({{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.4}, {0.4, 0.4}, {0.4, 0.6}, {0.8, 0.6}, {0.8, 0.8}, {0.2, 0.8}});
+  MeshFillOptions o;
+  ASSERT_NEAR(findMeshHoles(cut.mesh).holes[0].length, 4.0, 1e-12);  // the outer border: leave it open
+  o.holes = {1};
+  const MeshFillResult r = fillMeshHoles(cut.mesh, o);
+  ASSERT_EQ(r.filledHoles, 1);
+  expectInputKept(r, cut.mesh);
+  double minQ;
+  EXPECT_GT(meanNewQuality(r, cut.mesh, &minQ), 0.9);
+  EXPECT_GT(minQ, 0.45);
+  // The fill covers exactly the cut area: no triangle leaves the C, none overlaps.
+  double area = 0;
+  for (Eigen::Index t = cut.mesh.triangles.rows(); t < r.mesh.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = r.mesh.triangles.row(t).transpose();
+    const Eigen::Vector3d a = r.mesh.vertices.row(f[0]), b = r.mesh.vertices.row(f[1]), c = r.mesh.vertices.row(f[2]);
+    area += 0.5 * (b - a).cross(c - a).z();  // signed: a fold would subtract
+  }
+  double removed = 0;
+  for (Eigen::Index t = 0; t < cut.removed.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = cut.removed.triangles.row(t).transpose();
+    const Eigen::Vector3d a = cut.removed.vertices.row(f[0]), b = cut.removed.vertices.row(f[1]), c = cut.removed.vertices.row(f[2]);
+    removed += 0.5 * (b - a).cross(c - a).z();
+  }
+  EXPECT_NEAR(area, removed, 1e-12);
+  EXPECT_EQ(r.openHoles, 1);  // the outer border
+}
+
+TEST(MeshHoleFill, ElongatedHole) {
+  const auto cut = planeWithPolygonHole({{0.1, 0.48}, {0.9, 0.48}, {0.9, 0.53}, {0.1, 0.53}}, 80);
+  MeshFillOptions o;
+  o.maxBoundary = 300;
+  const MeshFillResult r = fillMeshHoles(cut.mesh, o);
+  ASSERT_EQ(r.filledHoles, 1);
+  double minQ;
+  EXPECT_GT(meanNewQuality(r, cut.mesh, &minQ), 0.85);
+  EXPECT_GT(minQ, 0.4);
+  for (Eigen::Index v = cut.mesh.vertices.rows(); v < r.mesh.vertices.rows(); ++v) EXPECT_EQ(r.mesh.vertices(v, 2), 0.0);
+}
+
+TEST(MeshHoleFill, HoleInASphereFollowsTheSphere) {
+  const TriangleMesh sphere = samples::icosphere(4, 1.0);
+  const auto cut = samples::cutHole(sphere, [](const Eigen::Vector3d& c) { return c.normalized().z() > std::cos(0.5); });
+  const MeshFillResult r = fillMeshHoles(cut.mesh);
+  ASSERT_EQ(r.filledHoles, 1);
+  expectInputKept(r, cut.mesh);
+  EXPECT_TRUE(r.closed);
+  expectClosedAndOriented(r.mesh);
+  double worst = 0;
+  for (Eigen::Index v = cut.mesh.vertices.rows(); v < r.mesh.vertices.rows(); ++v)
+    worst = std::max(worst, std::abs(r.mesh.vertices.row(v).norm() - 1.0));
+  // A cap of half-angle 0.5 rises 1 − cos 0.5 = 0.122 above its boundary's plane.
+  EXPECT_LT(worst, 0.122);
+  double minQ;
+  EXPECT_GT(meanNewQuality(r, cut.mesh, &minQ), 0.7);
+}
+
+TEST(MeshHoleFill, ThreeVertexHole) {
+  TriangleMesh sphere = samples::icosphere(2);
+  TriangleMesh open = sphere;
+  open.triangles = sphere.triangles.topRows(sphere.triangles.rows() - 1);
+  const MeshFillResult r = fillMeshHoles(open);
+  ASSERT_EQ(r.filledHoles, 1);
+  EXPECT_EQ(r.fills[0].boundaryVertices, 3);
+  EXPECT_EQ(r.fills[0].newVertices, 0);
+  EXPECT_EQ(r.fills[0].newTriangles, 1);
+  EXPECT_TRUE(r.closed);
+  // The one new triangle is the removed one, in its orientation (as a cyclic rotation).
+  const Eigen::Vector3i removed = sphere.triangles.bottomRows(1).transpose();
+  const Eigen::Vector3i added = r.mesh.triangles.bottomRows(1).transpose();
+  bool same = false;
+  for (int k = 0; k < 3; ++k) same = same || (added[k] == removed[0] && added[(k + 1) % 3] == removed[1] && added[(k + 2) % 3] == removed[2]);
+  EXPECT_TRUE(same);
+}
+
+TEST(MeshHoleFill, TwoThousandVertexLoopsCapATube) {
+  // Elliptic, so the caps need thousands rather than hundreds of thousands of new vertices.
+  const TriangleMesh t = samples::tube(2000, 3, 1.0, 0.01, 0.03);
+  const MeshFillResult r = fillMeshHoles(t);
+  ASSERT_EQ(r.filledHoles, 2);
+  EXPECT_EQ(r.fills[0].boundaryVertices, 2000);
+  EXPECT_TRUE(r.closed);
+  expectClosedAndOriented(r.mesh);
+  // Each cap is planar: its vertices share the z of its loop exactly or within rounding.
+  for (Eigen::Index v = t.vertices.rows(); v < r.mesh.vertices.rows(); ++v) {
+    const double z = r.mesh.vertices(v, 2);
+    EXPECT_TRUE(std::abs(z) < 1e-12 || std::abs(z - 0.01) < 1e-12) << z;
+    EXPECT_LT(std::hypot(r.mesh.vertices(v, 0), r.mesh.vertices(v, 1) / 0.03), 1.0);
+  }
+  double minQ;
+  EXPECT_GT(meanNewQuality(r, t, &minQ), 0.85);
+}
+
+TEST(MeshHoleFill, TwoHolesSharingAVertexAreFilledSeparately) {
+  // Two triangles of a grid removed so that their holes meet only at one vertex.
+  TriangleMesh plane = samples::gridPlane(6, 6, 1.0);
+  // Squares (2,2) and (3,3) share the corner (3,3); remove both squares' triangles.
+  std::vector<Eigen::Vector3i> kept;
+  for (Eigen::Index t = 0; t < plane.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = plane.triangles.row(t).transpose();
+    const Eigen::Vector3d c = (plane.vertices.row(f[0]) + plane.vertices.row(f[1]) + plane.vertices.row(f[2])).transpose() / 3;
+    const bool a = c.x() > 2 && c.x() < 3 && c.y() > 2 && c.y() < 3, b = c.x() > 3 && c.x() < 4 && c.y() > 3 && c.y() < 4;
+    if (!a && !b) kept.push_back(f);
+  }
+  TriangleMesh m = plane;
+  m.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (size_t i = 0; i < kept.size(); ++i) m.triangles.row(i) = kept[i].transpose();
+  const MeshHoleReport holes = findMeshHoles(m);
+  EXPECT_EQ(holes.singularVertices, 1);
+  MeshFillOptions o;
+  o.maxBoundary = 10;
+  const MeshFillResult r = fillMeshHoles(m, o);
+  EXPECT_EQ(r.filledHoles, 2);
+  for (const auto& f : r.fills)
+    if (f.boundaryVertices == 4) EXPECT_NE(f.message.find("singular"), std::string::npos) << f.message;
+  EXPECT_EQ(countBoundaryEdges(r.mesh), 24);  // the outer border only
+}
+
+TEST(MeshHoleFill, BadInputsGiveClearErrors) {
+  TriangleMesh empty;
+  EXPECT_THROW(fillMeshHoles(empty), Error);
+  TriangleMesh nan = samples::icosphere(1);
+  nan.vertices(3, 1) = std::nan("");
+  try {
+    fillMeshHoles(nan);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 3"), std::string::npos) << e.what();
+  }
+  TriangleMesh badIndex = samples::icosphere(1);
+  badIndex.triangles(0, 2) = 999;
+  EXPECT_THROW(fillMeshHoles(badIndex), Error);
+  const TriangleMesh sphere = samples::icosphere(1);
+  MeshFillOptions o;
+  o.holes = {0};
+  EXPECT_THROW(fillMeshHoles(sphere, o), Error);  // a closed mesh has no hole 0
+  const MeshFillResult closed = fillMeshHoles(sphere);
+  EXPECT_EQ(closed.fills.size(), 0u);
+  EXPECT_TRUE(closed.closed);
+}
+
+TEST(MeshHoleFill, NonManifoldEdgeLeavesItsHoleOpenAndFillsTheRest) {
+  // A plane with a hole, plus a fin: a triangle hanging on an edge of the hole's border.
+  const auto cut = planeWithPolygonHole({{0.3, 0.3}, {0.7, 0.3}, {0.7, 0.7}, {0.3, 0.7}}, 10);
+  TriangleMesh m = cut.mesh;
+  // Pick a border edge of the hole and give it a third triangle via a new vertex above.
+  const MeshHoleReport before = findMeshHoles(m);
+  const MeshHole& inner = before.holes[1];
+  const int a = inner.loop[0], b = inner.loop[1];
+  TriangleMesh fin = m;
+  fin.vertices.conservativeResize(m.vertices.rows() + 2, 3);
+  fin.vertices.row(m.vertices.rows()) = Eigen::RowVector3d(0.5, 0.5, 1);
+  fin.vertices.row(m.vertices.rows() + 1) = Eigen::RowVector3d(0.5, 0.5, -1);
+  fin.triangles.conservativeResize(m.triangles.rows() + 2, 3);
+  fin.triangles.row(m.triangles.rows()) = Eigen::RowVector3i(a, b, int(m.vertices.rows()));
+  fin.triangles.row(m.triangles.rows() + 1) = Eigen::RowVector3i(b, a, int(m.vertices.rows() + 1));
+  MeshFillResult r;
+  ASSERT_NO_THROW(r = fillMeshHoles(fin));
+  EXPECT_GT(r.detection.nonManifoldEdges, 0);
+  expectInputKept(r, fin);
+  bool reported = false;
+  for (const auto& f : r.fills) reported = reported || f.message.find("non-manifold") != std::string::npos;
+  EXPECT_TRUE(reported);
+}
+
+TEST(MeshHoleFill, InconsistentOrientationIsReadThroughTheMajority) {
+  const TriangleMesh sphere = samples::icosphere(3);
+  auto cut = samples::cutHole(sphere, [](const Eigen::Vector3d& c) { return c.normalized().z() > 0.9; });
+  TriangleMesh m = cut.mesh;
+  // Flip a few triangles far from the hole.
+  int flipped = 0;
+  for (Eigen::Index t = 0; t < m.triangles.rows() && flipped < 5; ++t) {
+    const Eigen::Vector3i f = m.triangles.row(t).transpose();
+    if (m.vertices(f[0], 2) < -0.5) { m.triangles.row(t) = Eigen::RowVector3i(f[0], f[2], f[1]); ++flipped; t += 40; }
+  }
+  const MeshFillResult r = fillMeshHoles(m);
+  EXPECT_GT(r.detection.inconsistentEdges, 0);
+  ASSERT_EQ(r.filledHoles, 1);
+  // The patch faces outward like the majority.
+  for (Eigen::Index t = m.triangles.rows(); t < r.mesh.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = r.mesh.triangles.row(t).transpose();
+    const Eigen::Vector3d a = r.mesh.vertices.row(f[0]), b = r.mesh.vertices.row(f[1]), c = r.mesh.vertices.row(f[2]);
+    EXPECT_GT((b - a).cross(c - a).dot(a + b + c), 0);
+  }
+}
+
+TEST(MeshHoleFill, DuplicatedSeamVerticesSplitTheLoop) {
+  // A plane with a hole whose border passes a vertex twice through two coincident copies:
+  // the triangles on one side of the pinch use a copy of the vertex.
+  TriangleMesh plane = samples::gridPlane(6, 6, 1.0);
+  std::vector<Eigen::Vector3i> kept;
+  for (Eigen::Index t = 0; t < plane.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = plane.triangles.row(t).transpose();
+    const Eigen::Vector3d c = (plane.vertices.row(f[0]) + plane.vertices.row(f[1]) + plane.vertices.row(f[2])).transpose() / 3;
+    const bool a = c.x() > 2 && c.x() < 3 && c.y() > 2 && c.y() < 3, b = c.x() > 3 && c.x() < 4 && c.y() > 3 && c.y() < 4;
+    if (!a && !b) kept.push_back(f);
+  }
+  TriangleMesh m = plane;
+  m.vertices.conservativeResize(plane.vertices.rows() + 1, 3);
+  const int pinch = 3 * 7 + 3, copy = static_cast<int>(plane.vertices.rows());
+  m.vertices.row(copy) = m.vertices.row(pinch);
+  m.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (size_t i = 0; i < kept.size(); ++i) {
+    Eigen::Vector3i f = kept[i];
+    const Eigen::Vector3d c = (plane.vertices.row(f[0]) + plane.vertices.row(f[1]) + plane.vertices.row(f[2])).transpose() / 3;
+    if (c.x() > 3 && c.y() < 3)  // the lower-right quadrant around the pinch uses the copy
+      for (int k = 0; k < 3; ++k)
+        if (f[k] == pinch) f[k] = copy;
+    m.triangles.row(i) = f.transpose();
+  }
+  MeshFillOptions o;
+  o.maxBoundary = 10;
+  const MeshFillResult r = fillMeshHoles(m, o);
+  EXPECT_GE(r.detection.duplicateSplits, 1);
+  EXPECT_EQ(r.filledHoles, 2);
+  EXPECT_FALSE(r.closed);
+  // Once the copies are welded, only the outer border is open.
+  EXPECT_EQ(countBoundaryEdges(r.mesh, weldMap(r.mesh.vertices, 1e-12)), 24);
+}
