@@ -244,6 +244,7 @@ int cmdMeshFill(const Args& a) {
   if (a.has("--fair-iterations")) o.fairIterations = static_cast<int>(number(a.get("--fair-iterations"), "--fair-iterations"));
   o.refine = !a.has("--no-refine");
   const MeshFillResult r = fillMeshHoles(readMesh(a.input), o);
+  if (r.fills.empty()) throw Error("the mesh has no holes (it is closed); nothing written");
   const int code = r.filledHoles == 0 && r.openHoles > 0 ? 2 : (r.openHoles > 0 ? 3 : 0);
   if (code != 2) writeMesh(r.mesh, a.get("--out"));
   if (a.has("--json")) {

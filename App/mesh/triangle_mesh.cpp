@@ -13,12 +13,12 @@ void validateMesh(const TriangleMesh& mesh, const std::string& what) {
   const Eigen::Index n = mesh.vertices.rows();
   for (Eigen::Index i = 0; i < n; ++i)
     if (!mesh.vertices.row(i).allFinite())
-      throw Error(what + ": vertex " + std::to_string(i) + " has a non-finite coordinate (NaN or infinity); repair or remove it");
+      throw Error(what + ": vertex " + std::to_string(i) + " has a coordinate that is not finite (NaN or infinity); repair or remove it");
   for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {
     const Eigen::RowVector3i f = mesh.triangles.row(t);
     for (int k = 0; k < 3; ++k)
       if (f[k] < 0 || f[k] >= n)
-        throw Error(what + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(f[k]) + " but the mesh has " +
+        throw Error(what + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(f[k]) + ", out of range: the mesh has " +
                     std::to_string(n) + " vertices");
     if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
       throw Error(what + ": triangle " + std::to_string(t) + " repeats a vertex (" + std::to_string(f[0]) + ", " +

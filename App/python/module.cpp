@@ -20,6 +20,8 @@
 #include "geometry/json_writer.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
+#include "mesh/mesh_hole_fill.h"
+#include "mesh/mesh_io.h"
 
 namespace py = pybind11;
 using namespace holefill;
@@ -260,6 +262,58 @@ PYBIND11_MODULE(HoleFillApp, m) {
     return guarded([&] { return continuityTuple(reportOnHole(faceBrep, modelBrep, edges)); });
   }, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
      "Like continuityReport, with the samples: (JSON, samples k x 6, edge per sample).");
+  m.def("meshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles) {
+    return guarded([&] {
+      const MeshHoleReport d = findMeshHoles(TriangleMesh{vertices, triangles});
+      JsonWriter w;
+      w.beginObject().key("holes").beginArray();
+      for (const MeshHole& h : d.holes) {
+        w.beginObject().field("boundary_vertices", static_cast<int>(h.loop.size())).field("length", h.length);
+        w.field("fillable", h.fillable).field("anticlockwise", h.anticlockwise).field("message", h.message).field("loop", h.loop);
+        w.endObject();
+      }
+      w.endArray();
+      w.field("boundary_edges", d.boundaryEdges).field("non_manifold_edges", d.nonManifoldEdges);
+      w.field("inconsistent_edges", d.inconsistentEdges).field("singular_vertices", d.singularVertices);
+      w.field("components", d.components).field("duplicate_vertex_splits", d.duplicateSplits).field("warnings", d.warnings);
+      w.endObject();
+      return w.str();
+    });
+  }, py::arg("vertices"), py::arg("triangles"), "Boundary loops of a triangle mesh (JSON: holes longest first, topology counts).");
+  m.def("fillMeshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<int>& holes,
+                            int maxBoundary, bool refine, int fairIterations, int smoothIterations, double densityFactor,
+                            double closenessScale, double featureScale, const std::function<bool(double)>& progress) {
+    return guarded([&] {
+      MeshFillOptions o;
+      o.holes = holes;
+      o.maxBoundary = maxBoundary;
+      o.refine = refine;
+      o.fairIterations = fairIterations;
+      if (smoothIterations >= 0) o.smoothing.iterations = smoothIterations;
+      if (densityFactor > 0) o.refinement.densityFactor = densityFactor;
+      if (closenessScale > 0) o.fairing.closenessScale = closenessScale;
+      if (featureScale > 0) o.fairing.featureScale = featureScale;
+      if (progress) o.progress = [&](double f) { py::gil_scoped_acquire g; return progress(f); };
+      MeshFillResult r;
+      {
+        py::gil_scoped_release release;
+        r = fillMeshHoles(TriangleMesh{vertices, triangles}, o);
+      }
+      return py::make_tuple(r.mesh.vertices, r.mesh.triangles, r.toJson());
+    });
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("maxBoundary") = 0,
+     py::arg("refine") = true, py::arg("fairIterations") = -1, py::arg("smoothIterations") = -1, py::arg("densityFactor") = 0.0,
+     py::arg("closenessScale") = 0.0, py::arg("featureScale") = 0.0, py::arg("progress") = nullptr,
+     "Fill holes of a triangle mesh (Hu et al.): (vertices, triangles, report JSON); the input rows come first, unchanged.");
+  m.def("readMesh", [](const std::string& path) {
+    return guarded([&] {
+      const TriangleMesh mesh = readMesh(path);
+      return py::make_tuple(mesh.vertices, mesh.triangles);
+    });
+  }, py::arg("path"), "Read .obj/.off/.ply/.stl as (vertices, triangles), with the core's validation.");
+  m.def("writeMesh", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::string& path) {
+    return guarded([&] { writeMesh(TriangleMesh{vertices, triangles}, path); return 0; });
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("path"), "Write .obj/.off/.ply/.stl atomically.");
   m.def("sampleModel", [](const std::string& name) {
     return guarded([&] { return py::bytes(shapeToBrepString(samples::byName(name))); });
   }, py::arg("name"), "BREP text of a built-in sample model.");

@@ -1,0 +1,125 @@
+"""Filling holes in triangle meshes (FreeCAD Mesh objects, scans, STL/OBJ/PLY/OFF files) by the
+method of Hu et al.: minimum-angle triangulation, density refinement, bilateral fairing.
+
+    import HoleFill
+    holes = HoleFill.meshHoles(obj.Mesh)                      # list of MeshHole, longest first
+    filled, report = HoleFill.fillMeshHoles(obj.Mesh, holes=[1, 2], maxBoundary=500)
+    for h in report["hole_fills"]:
+        print(h["hole"], h["new_triangles"], h["mean_quality"])
+    feature = HoleFill.makeMeshFill(obj)                      # new Mesh::Feature in the document
+
+The input mesh is never modified: the result is a new Mesh.Mesh whose first points and facets
+are the input's, in their order; only new points and facets follow. Hole numbers are 0-based
+(as `holefill mesh-holes` prints them). Errors raise HoleFillError.
+"""
+import json
+
+import HoleFillApp
+
+__all__ = ["meshHoles", "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole"]
+
+
+class MeshHole(dict):
+    """One boundary loop: index (0-based), boundaryVertices, length (model units), fillable,
+    message (why not, or what was done: split at a singular or duplicated vertex), loop
+    (point indices in order) and points ((x, y, z) per loop vertex)."""
+
+    def __repr__(self):
+        return "MeshHole(%d: %d vertices, length %.6g%s)" % (self["index"], self["boundaryVertices"], self["length"],
+                                                               "" if self["fillable"] else ", not fillable")
+
+
+def _arrays(mesh):
+    """(vertices, triangles) NumPy arrays of a Mesh.Mesh, a Mesh feature or a (points, facets) pair."""
+    import numpy as np
+    if hasattr(mesh, "Mesh") and not hasattr(mesh, "Topology"):
+        mesh = mesh.Mesh
+    if hasattr(mesh, "Topology"):
+        if mesh.CountFacets == 0:
+            raise HoleFillApp.HoleFillError("the mesh is empty: select a mesh with triangles")
+        points, facets = mesh.Topology
+    else:
+        points, facets = mesh
+    v = np.array([(p[0], p[1], p[2]) for p in points], dtype=float).reshape(-1, 3)
+    t = np.array(facets, dtype=np.int32).reshape(-1, 3)
+    return v, t
+
+
+def _mesh(vertices, triangles):
+    import FreeCAD
+    import Mesh
+    points = [FreeCAD.Vector(*p) for p in vertices.tolist()]
+    return Mesh.Mesh((points, [tuple(f) for f in triangles.tolist()]))
+
+
+def meshHoles(mesh):
+    """Boundary loops of a mesh (Mesh.Mesh or Mesh feature), longest first, as MeshHole dicts."""
+    v, t = _arrays(mesh)
+    d = json.loads(HoleFillApp.meshHoles(v, t))
+    out = []
+    for i, h in enumerate(d["holes"]):
+        hole = MeshHole(index=i, boundaryVertices=h["boundary_vertices"], length=h["length"], fillable=h["fillable"],
+                        message=h["message"], loop=h["loop"], points=[tuple(v[k]) for k in h["loop"]])
+        out.append(hole)
+    return out
+
+
+def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-1, smoothIterations=-1,
+                  densityFactor=0.0, closenessScale=0.0, featureScale=0.0, progress=None):
+    """Fill holes of `mesh`; returns (new Mesh.Mesh, report dict).
+
+    holes: hole numbers (0-based, as meshHoles numbers them) or MeshHole dicts; None fills every
+    fillable hole. maxBoundary > 0 leaves holes with more boundary vertices open (e.g. the border
+    of an open scan). refine=False keeps the bare minimum-angle triangulation. fairIterations,
+    smoothIterations, densityFactor (α), closenessScale and featureScale (σ_c, σ_s per local
+    density) override the defaults when given (≥ 0, > 0). progress(fraction) -> False cancels.
+    The report has per hole: new_vertices, new_triangles, min/max/mean_quality (Field's
+    2·r_in/R_circ), share_quality_0_7, seconds, message; and closed / closed_when_welded."""
+    v, t = _arrays(mesh)
+    indices = [int(h["index"]) if isinstance(h, dict) else int(h) for h in (holes or [])]
+    if holes is not None and not indices:
+        raise HoleFillApp.HoleFillError("no hole selected: pass hole numbers, or holes=None for all")
+    nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, int(maxBoundary), bool(refine), int(fairIterations),
+                                               int(smoothIterations), float(densityFactor), float(closenessScale),
+                                               float(featureScale), progress)
+    return _mesh(nv, nt), json.loads(report)
+
+
+def makeMeshFill(source, holes=None, maxBoundary=0, name=None, **options):
+    """Fill `source` (a Mesh feature) into a new Mesh::Feature of the same document, in one undo
+    transaction; the source is left as it is. Returns the new feature; the fill's report is in
+    its read-only property HoleFillReport (JSON text)."""
+    import FreeCAD
+    doc = source.Document
+    filled, report = fillMeshHoles(source.Mesh, holes=holes, maxBoundary=maxBoundary, **options)
+    if report["filled"] == 0:
+        reasons = "; ".join(sorted({h["message"] for h in report["hole_fills"] if h["message"]})) or "the mesh has no holes"
+        raise HoleFillApp.HoleFillError("no hole was filled: " + reasons)
+    doc.openTransaction("Fill mesh holes")
+    try:
+        feature = doc.addObject("Mesh::Feature", name or (source.Name + "_filled"))
+        feature.Label = source.Label + " (filled)"
+        feature.Mesh = filled
+        feature.addProperty("App::PropertyString", "HoleFillReport", "HoleFill", "JSON report of the fill")
+        feature.HoleFillReport = json.dumps(report)
+        feature.setEditorMode("HoleFillReport", 1)
+        if FreeCAD.GuiUp:
+            source.ViewObject.Visibility = False
+        doc.recompute()
+    except Exception:
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+    return feature
+
+
+def readMesh(path):
+    """Read .obj/.off/.ply/.stl with the core's checks (NaN, bad indices, truncation) into a Mesh.Mesh."""
+    v, t = HoleFillApp.readMesh(str(path))
+    return _mesh(v, t)
+
+
+def writeMesh(mesh, path):
+    """Write a Mesh.Mesh atomically as .obj/.off/.ply/.stl (kept exactly as indexed, duplicates included)."""
+    v, t = _arrays(mesh)
+    HoleFillApp.writeMesh(v, t, str(path))

@@ -1,0 +1,116 @@
+"""Headless FreeCAD tests of mesh hole filling: HoleFill.meshHoles / fillMeshHoles / makeMeshFill
+on FreeCAD Mesh objects, against the FreeCAD Mesh module's own view of the result."""
+import math
+import os
+import tempfile
+
+import FreeCAD
+import Mesh
+
+import fcharness
+import HoleFill
+
+
+def sphere_with_cap_hole(radius=2.0, cap=0.6):
+    m = Mesh.createSphere(radius, 60)
+    points, facets = m.Topology
+    cut = [i for i, f in enumerate(facets)
+           if sum(points[k].z for k in f) / 3 > radius * math.cos(cap)]
+    m.removeFacets(cut)
+    return m
+
+
+def expect_error(fn, *words):
+    try:
+        fn()
+    except HoleFill.HoleFillError as e:
+        for w in words:
+            assert w in str(e), "message %r lacks %r" % (str(e), w)
+        return str(e)
+    raise AssertionError("no HoleFillError raised")
+
+
+def test_sphere_hole_is_filled_closed_and_keeps_the_input():
+    m = sphere_with_cap_hole()
+    before = m.Topology
+    holes = HoleFill.meshHoles(m)
+    assert len(holes) == 1 and holes[0]["fillable"], holes
+    assert holes[0]["boundaryVertices"] == len(holes[0]["loop"]) > 20
+    filled, rep = HoleFill.fillMeshHoles(m)
+    assert rep["filled"] == 1 and rep["closed"], rep
+    # FreeCAD's own checks on the result: closed, no non-manifolds, no self-intersections.
+    assert filled.isSolid() and not filled.hasNonManifolds() and not filled.hasSelfIntersections()
+    assert m.Topology[0] == before[0] and m.CountFacets == len(before[1]), "the input mesh was modified"
+    pts, fac = filled.Topology
+    assert all(pts[i] == before[0][i] for i in range(len(before[0])))
+    assert [tuple(f) for f in fac[:len(before[1])]] == [tuple(f) for f in before[1]]
+    h = rep["hole_fills"][0]
+    assert h["new_vertices"] > 10 and h["mean_quality"] > 0.85 and h["min_quality"] > 0.3, h
+    # New points stay between the cut's plane and the sphere.
+    for p in pts[len(before[0]):]:
+        assert 2.0 * math.cos(0.6) - 1e-9 <= p.z <= 2.0 + 1e-9 and p.Length <= 2.0 + 1e-9, p
+    # FreeCAD's volume of the filled sphere lies between the cut sphere's and the full one's.
+    assert 0.9 * (4 / 3 * math.pi * 8) < filled.Volume <= 4 / 3 * math.pi * 8
+
+
+def test_selected_holes_and_max_boundary():
+    m = Mesh.createSphere(2.0, 60)
+    points, facets = m.Topology
+    # A large cap on top, a small one at the bottom.
+    m.removeFacets([i for i, f in enumerate(facets) if sum(points[k].z for k in f) / 3 > 2.0 * math.cos(0.6)
+                    or sum(points[k].z for k in f) / 3 < -2.0 * math.cos(0.3)])
+    holes = HoleFill.meshHoles(m)
+    assert len(holes) == 2, holes
+    one, rep = HoleFill.fillMeshHoles(m, holes=[holes[1]])
+    assert rep["filled"] == 1 and rep["open"] == 1 and not rep["closed"]
+    assert "not asked for" in [h for h in rep["hole_fills"] if not h["filled"]][0]["message"]
+    none_rep = HoleFill.fillMeshHoles(m, maxBoundary=2)[1]
+    assert none_rep["filled"] == 0
+    assert all("max-boundary" in h["message"] for h in none_rep["hole_fills"])
+
+
+def test_make_mesh_fill_adds_an_object_in_one_undo_step():
+    doc = FreeCAD.newDocument("MeshFill")
+    doc.UndoMode = 1
+    src = doc.addObject("Mesh::Feature", "Scan")
+    src.Mesh = sphere_with_cap_hole()
+    doc.recompute()
+    n_before = src.Mesh.CountFacets
+    feature = HoleFill.makeMeshFill(src)
+    name = feature.Name
+    assert feature.Mesh.isSolid() and feature.Mesh.CountFacets > n_before
+    assert src.Mesh.CountFacets == n_before
+    import json
+    assert json.loads(feature.HoleFillReport)["filled"] == 1
+    doc.undo()
+    assert doc.getObject(name) is None and doc.getObject("Scan") is not None
+    # Nothing to fill: a clear error and no new object.
+    closed = doc.addObject("Mesh::Feature", "Closed")
+    closed.Mesh = Mesh.createSphere(1.0, 20)
+    count = len(doc.Objects)
+    expect_error(lambda: HoleFill.makeMeshFill(closed), "no hole was filled", "no holes")
+    assert len(doc.Objects) == count
+    FreeCAD.closeDocument(doc.Name)
+
+
+def test_bad_meshes_give_clear_errors():
+    expect_error(lambda: HoleFill.fillMeshHoles(Mesh.Mesh()), "empty")
+    v = FreeCAD.Vector
+    nan = ([v(0, 0, 0), v(1, 0, 0), v(float("nan"), 1, 0)], [(0, 1, 2)])
+    expect_error(lambda: HoleFill.fillMeshHoles(nan), "vertex 2", "not finite")
+    expect_error(lambda: HoleFill.fillMeshHoles(([v(0, 0, 0), v(1, 0, 0), v(0, 1, 0)], [(0, 1, 7)])), "out of range", "vertex 7")
+    tmp = tempfile.mkdtemp()
+    bad = os.path.join(tmp, "broken.off")
+    with open(bad, "w") as f:
+        f.write("OFF\n100000000 3 0\n0 0 0\n")
+    expect_error(lambda: HoleFill.readMesh(bad), "truncated")
+    expect_error(lambda: HoleFill.readMesh(os.path.join(tmp, "missing.stl")), "cannot open")
+    # Round trip through our writer and reader keeps every point and facet.
+    m = sphere_with_cap_hole()
+    path = os.path.join(tmp, "m.ply")
+    HoleFill.writeMesh(m, path)
+    back = HoleFill.readMesh(path)
+    assert back.CountPoints == m.CountPoints and back.CountFacets == m.CountFacets
+
+
+fcharness.run(globals())
