@@ -21,10 +21,11 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
   const auto start = std::chrono::steady_clock::now();
   if (mesh.triangles.rows() == 0) throw Error("the mesh has no triangles; there is nothing to fill");
   MeshFillResult result;
-  result.detection = findMeshHoles(mesh);
+  validateMesh(mesh);
+  const MeshTopology topo(mesh);
+  result.detection = findMeshHoles(mesh, topo);
   const MeshHoleReport& detection = result.detection;
   result.warnings = detection.warnings;
-  const MeshTopology topo(mesh);
 
   std::vector<bool> wanted(detection.holes.size(), options.holes.empty());
   for (int h : options.holes) {
@@ -48,7 +49,7 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
     const Eigen::Vector3d n = orientedNormal(static_cast<int>(t));
     for (int k = 0; k < 3; ++k) normalSum[mesh.triangles(t, k)] += n;
   }
-  for (const auto& [key, e] : topo.edges()) {
+  for (const MeshTopology::Edge& e : topo.edges()) {
     const double len = (point(e.a) - point(e.b)).norm();
     edgeSum[e.a] += len; edgeSum[e.b] += len;
     ++edgeCount[e.a]; ++edgeCount[e.b];
@@ -147,9 +148,26 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
   result.mesh.triangles.topRows(nt) = mesh.triangles;
   for (size_t i = 0; i < newTriangles.size(); ++i) result.mesh.triangles.row(nt + i) = newTriangles[i].transpose();
 
-  result.closed = countBoundaryEdges(result.mesh) == 0;
-  result.closedWhenWelded =
-      result.closed || countBoundaryEdges(result.mesh, weldMap(result.mesh.vertices, 1e-9 * boundingDiagonal(mesh.vertices))) == 0;
+  // Each filled loop closes exactly its own boundary edges, unless it was split at duplicated
+  // vertices (its closing edge then ends at a copy): count only when that is not decisive.
+  size_t closedEdges = 0;
+  bool atCopies = false;
+  for (const MeshHoleFill& f : result.fills) {
+    if (!f.filled) continue;
+    const MeshHole& h = detection.holes[f.hole];
+    closedEdges += h.loop.size();
+    for (size_t k = 0; k < h.loop.size(); ++k) atCopies = atCopies || h.edgeEnds[k] != h.loop[(k + 1) % h.loop.size()];
+  }
+  result.closed = atCopies ? countBoundaryEdges(result.mesh) == 0 : closedEdges == static_cast<size_t>(detection.boundaryEdges);
+  if (!result.closed) {
+    // Only vertices on the input's boundary can have been left with a coincident partner.
+    std::vector<int> candidates;
+    for (const MeshHole& h : detection.holes) candidates.insert(candidates.end(), h.loop.begin(), h.loop.end());
+    result.closedWhenWelded =
+        countBoundaryEdges(result.mesh, weldMap(result.mesh.vertices, 1e-9 * boundingDiagonal(mesh.vertices), candidates)) == 0;
+  } else {
+    result.closedWhenWelded = true;
+  }
   result.seconds = secondsSince(start);
   return result;
 }

@@ -26,13 +26,13 @@ int nextOnFan(const MeshTopology& topo, int triangle, int v, const std::vector<s
   for (int guard = 0; guard < 4096; ++guard) {
     const int w = topo.nextVertex(t, v);
     const MeshTopology::Edge& e = topo.edge(v, w);
-    if (e.triangles.size() == 1) {
+    if (e.count == 1) {
       for (int h : outgoing[v])
         if (halfedges[h].to == w && halfedges[h].triangle == t) return h;
       return -1;
     }
-    if (e.triangles.size() != 2) return -1;
-    t = e.triangles[0] == t ? e.triangles[1] : e.triangles[0];
+    if (e.count != 2) return -1;
+    t = topo.triangle(e, 0) == t ? topo.triangle(e, 1) : topo.triangle(e, 0);
   }
   return -1;
 }
@@ -70,8 +70,11 @@ std::vector<std::vector<int>> splitAtRepeats(const std::vector<int>& loop, const
 
 MeshHoleReport findMeshHoles(const TriangleMesh& mesh, double coincidence) {
   validateMesh(mesh);
+  return findMeshHoles(mesh, MeshTopology(mesh), coincidence);
+}
+
+MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo, double coincidence) {
   MeshHoleReport report;
-  const MeshTopology topo(mesh);
   report.nonManifoldEdges = topo.nonManifoldEdges;
   report.inconsistentEdges = topo.inconsistentEdges;
   report.components = topo.components;
@@ -93,9 +96,9 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, double coincidence) {
   // Boundary halfedges in the (possibly flipped) orientation the tracer reads.
   std::vector<BoundaryHalfedge> halfedges;
   std::vector<std::vector<int>> outgoing(mesh.vertices.rows());
-  for (const auto& [key, e] : topo.edges()) {
-    if (e.triangles.size() != 1) continue;
-    const int t = e.triangles[0];
+  for (const MeshTopology::Edge& e : topo.edges()) {
+    if (e.count != 1) continue;
+    const int t = topo.triangle(e, 0);
     const int a = e.a, b = e.b;
     const int from = topo.nextVertex(t, a) == b ? a : b;
     const int to = from == a ? b : a;
@@ -104,8 +107,8 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, double coincidence) {
   }
   report.boundaryEdges = static_cast<int>(halfedges.size());
   std::vector<bool> nearNonManifold(mesh.vertices.rows(), false);
-  for (const auto& [key, e] : topo.edges())
-    if (e.triangles.size() > 2) nearNonManifold[e.a] = nearNonManifold[e.b] = true;
+  for (const MeshTopology::Edge& e : topo.edges())
+    if (e.count > 2) nearNonManifold[e.a] = nearNonManifold[e.b] = true;
   std::vector<int> boundaryVertices;
   for (size_t v = 0; v < outgoing.size(); ++v) {
     if (outgoing[v].size() > 1) ++report.singularVertices;

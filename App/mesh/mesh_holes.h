@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_topology.h"
 #include "mesh/triangle_mesh.h"
 
 namespace holefill {
@@ -52,5 +53,7 @@ struct MeshHoleReport {
 // then finds every boundary loop. Vertices closer than coincidence·(bounding-box diagonal)
 // count as copies of each other.
 MeshHoleReport findMeshHoles(const TriangleMesh& mesh, double coincidence = 1e-9);
+// The same on a validated mesh whose topology is already built.
+MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topology, double coincidence = 1e-9);
 
 }  // namespace holefill

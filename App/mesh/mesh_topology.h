@@ -7,7 +7,6 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "mesh/triangle_mesh.h"
@@ -18,7 +17,7 @@ class MeshTopology {
 public:
   struct Edge {
     int a, b;                            // a < b
-    std::vector<int> triangles;
+    int first, count;                    // its triangles: triangle(e, 0 .. count−1)
   };
 
   explicit MeshTopology(const TriangleMesh& mesh);
@@ -27,11 +26,12 @@ public:
   int nextVertex(int t, int v) const;
   // Throws holefill::Error when the edge does not exist; hasEdge asks first.
   const Edge& edge(int u, int v) const;
-  bool hasEdge(int u, int v) const { return edges_.count(key(u, v)) > 0; }
-  const std::unordered_map<std::uint64_t, Edge>& edges() const { return edges_; }
+  bool hasEdge(int u, int v) const;
+  const std::vector<Edge>& edges() const { return edges_; }
+  int triangle(const Edge& e, int k) const { return edgeTriangles_[e.first + k]; }
   static std::uint64_t key(int u, int v) {
     const auto lo = static_cast<std::uint64_t>(std::min(u, v)), hi = static_cast<std::uint64_t>(std::max(u, v));
-    return (hi << 32) | lo;
+    return (lo << 32) | hi;  // ordered by the lower vertex first: the order of the bucketed build
   }
 
   std::vector<bool> flipped;             // per triangle
@@ -42,7 +42,11 @@ public:
 
 private:
   const TriangleMesh& mesh_;
-  std::unordered_map<std::uint64_t, Edge> edges_;
+  // Sorted by key; edges_[i] belongs to keys_[i]. Sorting flat arrays instead of hashing
+  // per-edge vectors builds a 75k-triangle mesh's topology several times faster.
+  std::vector<std::uint64_t> keys_;
+  std::vector<Edge> edges_;
+  std::vector<int> edgeTriangles_;
 };
 
 }  // namespace holefill

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <unordered_map>
+#include <cstdint>
 
 #include "geometry/error.h"
 
@@ -79,18 +79,24 @@ std::vector<int> weldMap(const Eigen::MatrixX3d& vertices, double tol, const std
 }
 
 int countBoundaryEdges(const TriangleMesh& mesh, const std::vector<int>& weld) {
-  std::unordered_map<std::uint64_t, int> count;
-  count.reserve(static_cast<size_t>(mesh.triangles.rows()) * 2);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(static_cast<size_t>(mesh.triangles.rows()) * 3);
   for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t)
     for (int k = 0; k < 3; ++k) {
       int u = mesh.triangles(t, k), v = mesh.triangles(t, (k + 1) % 3);
       if (!weld.empty()) { u = weld[u]; v = weld[v]; }
       if (u == v) continue;
       const auto lo = static_cast<std::uint64_t>(std::min(u, v)), hi = static_cast<std::uint64_t>(std::max(u, v));
-      ++count[(hi << 32) | lo];
+      keys.push_back((hi << 32) | lo);
     }
+  std::sort(keys.begin(), keys.end());
   int boundary = 0;
-  for (const auto& [k, c] : count) boundary += c == 1 ? 1 : 0;
+  for (size_t i = 0; i < keys.size();) {
+    size_t j = i;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    boundary += j - i == 1 ? 1 : 0;
+    i = j;
+  }
   return boundary;
 }
 

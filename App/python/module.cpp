@@ -20,6 +20,7 @@
 #include "geometry/json_writer.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
+#include "mesh/fill_metrics.h"
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
 
@@ -305,6 +306,15 @@ PYBIND11_MODULE(HoleFillApp, m) {
      py::arg("refine") = true, py::arg("fairIterations") = -1, py::arg("smoothIterations") = -1, py::arg("densityFactor") = 0.0,
      py::arg("closenessScale") = 0.0, py::arg("featureScale") = 0.0, py::arg("progress") = nullptr,
      "Fill holes of a triangle mesh (Hu et al.): (vertices, triangles, report JSON); the input rows come first, unchanged.");
+  m.def("measureMeshFill", [](const Eigen::MatrixX3d& inV, const Eigen::MatrixX3i& inT, const Eigen::MatrixX3d& outV,
+                              const Eigen::MatrixX3i& outT, const Eigen::MatrixX3d& gtV, const Eigen::MatrixX3i& gtT) {
+    return guarded([&] {
+      py::gil_scoped_release release;
+      return toJson(measureFill(TriangleMesh{inV, inT}, TriangleMesh{outV, outT}, TriangleMesh{gtV, gtT}));
+    });
+  }, py::arg("inputVertices"), py::arg("inputTriangles"), py::arg("outputVertices"), py::arg("outputTriangles"),
+     py::arg("truthVertices"), py::arg("truthTriangles"),
+     "Metrics of any filler's output against its input and a ground truth (may be empty): JSON.");
   m.def("readMesh", [](const std::string& path) {
     return guarded([&] {
       const TriangleMesh mesh = readMesh(path);

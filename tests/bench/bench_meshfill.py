@@ -1,0 +1,222 @@
+"""Benchmark: triangle-mesh hole filling, HoleFill (Hu et al.: minimum-angle triangulation,
+refinement, bilateral fairing) against CGAL PMP triangulate_refine_and_fair_hole (Liepa, CGAL's
+defaults) and FreeCAD Mesh fillupHoles (FreeCAD's defaults), side by side in one run on the same
+inputs.
+
+Cases
+  real   meshes with holes as they come: CGAL's demo data (Debian libcgal-demo: holes.off,
+         mech-holes-shark.off, elephant-with-holes.off with its duplicated seam vertices) and
+         assimp's sphereWithHole.stl (Debian assimp-testmodels; STL, so corners are welded by
+         position, leaving non-manifold boundary vertices).
+  truth  holes cut from closed meshes, the cut triangles kept as ground truth: the Stanford bunny
+         (CGAL's bunny00.off) and CGAL's elephant (smooth), fandisk, couplingdown and anchor
+         (CAD-like: creases and blends) with holes centred on a sharp edge so they cross it.
+Every output is measured by the same function (HoleFillApp.measureMeshFill), which finds what a
+filler added by position: holes left (boundary edges, coincident vertices welded), non-manifold
+or misoriented edges added, Field's quality q = 2 r_in/R_circ of the new triangles, and the
+distance of the new surface (new vertices and new-triangle centroids) to the cut-away truth,
+RMS and max, over the bounding-box diagonal. ok = no boundary edge left, nothing non-manifold,
+misoriented or degenerate added, input kept. Times: the fill alone, fastest of REPEATS runs
+(CGAL in its own process, FreeCAD and ours in this one).
+Run by scripts/bench.sh inside freecadcmd; writes $BENCH_OUT/bench_meshfill.json and .md."""
+import json
+import os
+import subprocess
+import time
+
+import numpy as np
+
+import FreeCAD
+import Mesh
+
+import HoleFillApp
+
+OUT = os.environ.get("BENCH_OUT", "/tmp")
+CGAL_DATA = os.environ.get("CGAL_DATA", os.path.join(OUT, "cgal-data"))
+CGAL_TOOL = os.environ.get("HOLEFILL_BENCH_CGAL", "")
+ASSIMP_STL = "/usr/share/assimp/models/STL/sphereWithHole.stl"
+REPEATS = int(os.environ.get("BENCH_REPEATS", "3"))
+
+
+def off_path(name):
+    return os.path.join(CGAL_DATA, "meshes", name)
+
+
+def edge_lengths(v, t):
+    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    return np.linalg.norm(v[e[:, 0]] - v[e[:, 1]], axis=1)
+
+
+def sharp_vertices(v, t, degrees=40.0):
+    """Vertices on edges whose dihedral angle exceeds `degrees`."""
+    n = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
+    n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
+    owner = {}
+    sharp = set()
+    for f, tri in enumerate(t):
+        for k in range(3):
+            a, b = int(tri[k]), int(tri[(k + 1) % 3])
+            key = (min(a, b), max(a, b))
+            if key in owner:
+                if np.degrees(np.arccos(np.clip(n[owner[key]] @ n[f], -1, 1))) > degrees:
+                    sharp.update(key)
+            else:
+                owner[key] = f
+    return sorted(sharp)
+
+
+def cut(v, t, centres, radius):
+    """Removes triangles whose centroid lies within `radius` of a centre; compacts both parts."""
+    c = v[t].mean(axis=1)
+    inside = np.zeros(len(t), bool)
+    for p in centres:
+        inside |= np.linalg.norm(c - p, axis=1) < radius
+
+    def compact(tris):
+        used = np.unique(tris)
+        remap = -np.ones(len(v), np.int64)
+        remap[used] = np.arange(len(used))
+        return v[used].copy(), remap[tris].astype(np.int32)
+    return compact(t[~inside]), compact(t[inside])
+
+
+def truth_case(name, file, picks, radius_edges, sharp):
+    v, t = HoleFillApp.readMesh(off_path(file))
+    h = radius_edges * float(np.mean(edge_lengths(v, t)))
+    pool = sharp_vertices(v, t) if sharp else list(range(len(v)))
+    centres = [v[pool[int(f * (len(pool) - 1))]] for f in picks]
+    (iv, it), (gv, gt) = cut(v, t, centres, h)
+    holes = json.loads(HoleFillApp.meshHoles(iv, it))["holes"]
+    return dict(name=name, kind="truth, " + ("crosses a feature" if sharp else "smooth"), v=iv, t=it, gv=gv, gt=gt,
+                holes=len(holes))
+
+
+def cases():
+    out = []
+    for name in ("holes.off", "mech-holes-shark.off", "elephant-with-holes.off"):
+        v, t = HoleFillApp.readMesh(off_path(name))
+        out.append(dict(name=name, kind="real", v=v, t=t, gv=np.zeros((0, 3)), gt=np.zeros((0, 3), np.int32),
+                        holes=len(json.loads(HoleFillApp.meshHoles(v, t))["holes"])))
+    if os.path.exists(ASSIMP_STL):
+        v, t = HoleFillApp.readMesh(ASSIMP_STL)
+        out.append(dict(name="sphereWithHole.stl", kind="real", v=v, t=t, gv=np.zeros((0, 3)),
+                        gt=np.zeros((0, 3), np.int32), holes=len(json.loads(HoleFillApp.meshHoles(v, t))["holes"])))
+    out.append(truth_case("bunny (3 holes)", "bunny00.off", (0.13, 0.5, 0.81), 4.0, False))
+    out.append(truth_case("elephant (2 holes)", "elephant.off", (0.3, 0.7), 3.0, False))
+    out.append(truth_case("fandisk (2 holes)", "fandisk.off", (0.25, 0.6), 4.0, True))
+    out.append(truth_case("couplingdown (2 holes)", "couplingdown.off", (0.2, 0.7), 3.0, True))
+    out.append(truth_case("anchor (1 hole)", "anchor.off", (0.45,), 3.0, True))
+    return out
+
+
+def best_of(fn):
+    best, result = None, None
+    for _ in range(REPEATS):
+        t0 = time.perf_counter()
+        r = fn()
+        dt = time.perf_counter() - t0
+        if best is None or dt < best:
+            best = dt
+        if result is None:
+            result = r
+    return result, best
+
+
+def run_ours(c):
+    (ov, ot, rep), dt = best_of(lambda: HoleFillApp.fillMeshHoles(c["v"], c["t"]))
+    return ov, ot, dt, ""
+
+
+def run_freecad(c):
+    pts = [FreeCAD.Vector(*p) for p in c["v"].tolist()]
+    fac = [tuple(f) for f in c["t"].tolist()]
+
+    def fill():
+        m = Mesh.Mesh((pts, fac))
+        m.fillupHoles(100000)
+        return m
+    m, dt = best_of(fill)
+    p, f = m.Topology
+    return (np.array([(q.x, q.y, q.z) for q in p], float).reshape(-1, 3), np.array(f, np.int32).reshape(-1, 3), dt, "")
+
+
+def run_cgal(c, work):
+    if not CGAL_TOOL:
+        return None
+    src = os.path.join(work, "in.off")
+    dst = os.path.join(work, "cgal_out.off")
+    HoleFillApp.writeMesh(c["v"], c["t"], src)
+    best, info = None, {}
+    for _ in range(REPEATS):
+        if os.path.exists(dst):
+            os.remove(dst)
+        r = subprocess.run([CGAL_TOOL, src, dst], capture_output=True, text=True, timeout=900)
+        try:
+            info = json.loads(r.stdout.strip().splitlines()[-1])
+        except (ValueError, IndexError):
+            info = {"read": "crashed (exit %d)" % r.returncode, "seconds": float("nan")}
+            break
+        best = info["seconds"] if best is None else min(best, info["seconds"])
+    if not os.path.exists(dst):
+        return None, None, float("nan"), info.get("read", "failed")
+    ov, ot = HoleFillApp.readMesh(dst)
+    note = "" if info.get("read") == "plain" else "read: " + info.get("read", "?")
+    return ov, ot, best, note
+
+
+def measure(c, ov, ot):
+    return json.loads(HoleFillApp.measureMeshFill(c["v"], c["t"], ov, ot, c["gv"], c["gt"]))
+
+
+def fmt(x, spec):
+    return "-" if x is None or (isinstance(x, float) and (x != x or x < 0)) else format(x, spec)
+
+
+def main():
+    work = os.path.join(OUT, "meshfill")
+    os.makedirs(work, exist_ok=True)
+    rows = []
+    for c in cases():
+        for method, runner in (("HoleFill", run_ours), ("CGAL Liepa", lambda c: run_cgal(c, work)),
+                               ("FreeCAD fillupHoles", run_freecad)):
+            r = runner(c)
+            if r is None:
+                continue
+            ov, ot, dt, note = r
+            if ov is None:
+                rows.append(dict(case=c["name"], kind=c["kind"], method=method, ok=False, note=note, seconds=dt))
+                continue
+            m = measure(c, ov, ot)
+            ok = (m["boundary_edges_after"] == 0 and m["non_manifold_edges_added"] == 0 and
+                  m["misoriented_edges_added"] == 0 and m["degenerate_triangles"] == 0 and m["kept_input"])
+            rows.append(dict(case=c["name"], kind=c["kind"], method=method, ok=ok, note=note, seconds=dt, holes=c["holes"], **m))
+            safe = c["name"].split()[0].replace(".", "_")
+            HoleFillApp.writeMesh(ov, ot, os.path.join(work, "%s_%s.off" % (safe, method.split()[0].lower())))
+    json.dump(rows, open(os.path.join(OUT, "bench_meshfill.json"), "w"), indent=1)
+    head = ("| case | kind | holes | method | ok | left open (bnd edges) | +nonmanif/misor | +V | +T | q min | q mean "
+            "| q>=0.7 | RMS/diag | max/diag | time s | note |")
+    lines = [head, "|" + "---|" * 16]
+    for r in rows:
+        if "new_triangles" not in r:
+            lines.append("| %s | %s | | %s | no | | | | | | | | | | %s | %s |" % (r["case"], r["kind"], r["method"],
+                                                                           fmt(r["seconds"], ".3f"), r["note"]))
+            continue
+        lines.append("| %s | %s | %d | %s | %s | %d | %d/%d | %d | %d | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["case"], r["kind"], r["holes"], r["method"], "yes" if r["ok"] else "no", r["boundary_edges_after"],
+            r["non_manifold_edges_added"], r["misoriented_edges_added"], r["new_vertices"], r["new_triangles"],
+            fmt(r["min_quality"], ".3f"), fmt(r["mean_quality"], ".3f"), fmt(r["share_quality_0_7"], ".2f"),
+            fmt(r["rms_distance"], ".2e"), fmt(r["max_distance"], ".2e"), fmt(r["seconds"], ".4f"), r["note"]))
+    text = "\n".join(lines)
+    open(os.path.join(OUT, "bench_meshfill.md"), "w").write(text + "\n")
+    print(text)
+
+
+try:
+    main()
+except Exception:
+    import traceback
+    traceback.print_exc()
+finally:
+    import sys
+    sys.stdout.flush()
+    os._exit(0)
