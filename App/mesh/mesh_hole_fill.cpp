@@ -1,5 +1,6 @@
 #include "mesh/mesh_hole_fill.h"
 
+#include <algorithm>
 #include <chrono>
 #include <unordered_set>
 
@@ -55,6 +56,16 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
     ++edgeCount[e.a]; ++edgeCount[e.b];
   }
 
+  // The surrounding mesh's neighbours of every boundary vertex, for the fairing's fixed ring.
+  std::vector<bool> onBoundary(nv, false);
+  for (const MeshHole& h : detection.holes)
+    for (int v : h.loop) onBoundary[v] = true;
+  std::vector<std::vector<int>> neighbours(nv);
+  for (const MeshTopology::Edge& e : topo.edges()) {
+    if (onBoundary[e.a]) neighbours[e.a].push_back(e.b);
+    if (onBoundary[e.b]) neighbours[e.b].push_back(e.a);
+  }
+
   std::vector<Eigen::Vector3d> newPoints;
   std::vector<Eigen::Vector3i> newTriangles;
   std::unordered_set<std::uint64_t> addedEdges;
@@ -104,6 +115,11 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
         }
         const TangentialSmoothingResult smooth = smoothTangentially(patch, options.smoothing, options.refinement);
         fill.swaps += smooth.swaps;
+        std::vector<std::vector<Eigen::Vector3d>> outer(n);
+        for (int i = 0; i < n; ++i)
+          for (int q : neighbours[loop[i]])
+            if (std::find(loop.begin(), loop.end(), q) == loop.end()) outer[i].push_back(point(q));
+        fairLaplacian(patch, outer, options.shape);
         BilateralOptions fairing = options.fairing;
         if (options.fairIterations >= 0) fairing.iterations = options.fairIterations;
         bilateralFair(patch, fairing);

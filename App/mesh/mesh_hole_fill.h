@@ -15,6 +15,7 @@
 
 #include "mesh/bilateral_fairing.h"
 #include "mesh/mesh_holes.h"
+#include "mesh/laplacian_fairing.h"
 #include "mesh/min_angle_triangulation.h"
 #include "mesh/patch_refinement.h"
 #include "mesh/tangential_smoothing.h"
@@ -29,6 +30,7 @@ struct MeshFillOptions {
   MinAngleOptions triangulation;
   RefinementOptions refinement;
   TangentialSmoothingOptions smoothing;  // our addition between refinement and fairing (see its header)
+  LaplacianFairingOptions shape;         // our addition: Δ^k placement before the bilateral filter (see its header)
   BilateralOptions fairing;
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel (filled holes are kept)
 };

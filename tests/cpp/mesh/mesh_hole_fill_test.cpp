@@ -159,12 +159,16 @@ TEST(MeshHoleFill, TwoThousandVertexLoopsCapATube) {
   EXPECT_EQ(r.fills[0].boundaryVertices, 2000);
   EXPECT_TRUE(r.closed);
   expectClosedAndOriented(r.mesh);
-  // Each cap is planar: its vertices share the z of its loop exactly or within rounding.
+  // The thin-plate fill continues the tube's wall a little past each rim (a shallow dome
+  // within the tube's width), never outside the rim's ellipse.
+  double lowest = 0, highest = 0.01;
   for (Eigen::Index v = t.vertices.rows(); v < r.mesh.vertices.rows(); ++v) {
-    const double z = r.mesh.vertices(v, 2);
-    EXPECT_TRUE(std::abs(z) < 1e-12 || std::abs(z - 0.01) < 1e-12) << z;
+    lowest = std::min(lowest, r.mesh.vertices(v, 2));
+    highest = std::max(highest, r.mesh.vertices(v, 2));
     EXPECT_LT(std::hypot(r.mesh.vertices(v, 0), r.mesh.vertices(v, 1) / 0.03), 1.0);
   }
+  EXPECT_LT(highest - 0.01, 0.03);
+  EXPECT_GT(lowest, -0.03);
   double minQ;
   EXPECT_GT(meanNewQuality(r, t, &minQ), 0.85);
 }
