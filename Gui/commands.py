@@ -4,7 +4,7 @@ import FreeCADGui
 
 import HoleFillGui
 
-COMMANDS = ["HoleFill_FillHole", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
+COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
 
 
 class FillHoleCommand:
@@ -20,6 +20,30 @@ class FillHoleCommand:
     def Activated(self):
         from HoleFillGui import task_fill
         FreeCADGui.Control.showDialog(task_fill.FillTaskPanel())
+
+
+class FillMeshHolesCommand:
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon("HoleFill_MeshFill.svg"),
+                "MenuText": "Fill mesh holes",
+                "ToolTip": "Fill holes of a triangle mesh (scan, STL) with well-shaped triangles that follow the surface.\n"
+                           "Select a mesh object, then run: its holes are listed and drawn; check the ones to fill."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from HoleFillGui import inspect_panels, task_meshfill
+        try:
+            panel = task_meshfill.MeshFillPanel(task_meshfill.mesh_from_selection())
+        except task_meshfill.SelectionError as e:
+            inspect_panels._message(str(e))
+            return
+        except Exception as e:  # a core error on this mesh: say it, change nothing
+            inspect_panels._message("Fill mesh holes failed: %s" % e)
+            task_meshfill.remove_overlay()
+            return
+        FreeCADGui.Control.showDialog(panel)
 
 
 class _InspectCommand:
@@ -78,6 +102,7 @@ class ContinuityCheckCommand(_InspectCommand):
 
 def register():
     FreeCADGui.addCommand("HoleFill_FillHole", FillHoleCommand())
+    FreeCADGui.addCommand("HoleFill_FillMeshHoles", FillMeshHolesCommand())
     FreeCADGui.addCommand("HoleFill_CurvatureMap", CurvatureMapCommand())
     FreeCADGui.addCommand("HoleFill_ZebraStripes", ZebraStripesCommand())
     FreeCADGui.addCommand("HoleFill_ContinuityCheck", ContinuityCheckCommand())
