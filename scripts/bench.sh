@@ -4,12 +4,17 @@
 #     holefill_bench_inspect: exact curvature per sample vs OCCT SLProps (1M samples), tessellation and render times;
 #  2. tests/bench/bench_fill.py in freecadcmd: HoleFill NP/MVC/UVTran/auto vs FreeCAD Surface
 #     Filling (GeomPlate) on the same holes, asked for G1 and for G2, in one run.
+#  3. tests/bench/bench_meshfill.py in freecadcmd: HoleFill mesh-hole filling vs CGAL PMP
+#     triangulate_refine_and_fair_hole (holefill_bench_cgal_fill) vs FreeCAD Mesh fillupHoles,
+#     on CGAL's demo meshes, assimp's sphereWithHole.stl and holes cut from closed meshes.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
+export HOLEFILL_EXTRA_PKGS="libcgal-dev libcgal-demo assimp-testmodels"
 . "$(dirname "$0")/prepare.sh"
 export BENCH_OUT="$root/bench-out"
 mkdir -p "$BENCH_OUT"
+if [ "${BENCH_ONLY:-}" != meshfill ]; then  # BENCH_ONLY=meshfill runs part 3 alone
 "$build/tests/holefill_bench_params" "${BENCH_PARAM_HOLES:-1000}" | tee "$BENCH_OUT/bench_params.md"
 echo
 "$build/tests/holefill_bench_inspect" "${BENCH_INSPECT_SAMPLES:-1000000}" | tee "$BENCH_OUT/bench_inspect.md"
@@ -17,6 +22,18 @@ echo
 (
   . tests/fcenv.sh "$build/Mod/HoleFill"
   freecadcmd tests/bench/bench_fill.py 2>&1 | grep -v '^ *#\|^$\|Juergen\|licensed\|wouldn.t be possible\|Libs:\|Recompute\|(100 %)\|(50 %)'
+  rm -rf "$HOME"
+)
+fi
+cmake --build "$build" --target holefill_bench_cgal_fill -j "$(nproc)"
+if [ ! -d "$BENCH_OUT/cgal-data/meshes" ]; then
+  tar -xzf /usr/share/doc/libcgal-demo/data.tar.gz -C "$BENCH_OUT" && mv "$BENCH_OUT/data" "$BENCH_OUT/cgal-data"
+fi
+echo
+(
+  . tests/fcenv.sh "$build/Mod/HoleFill"
+  HOLEFILL_BENCH_CGAL="$build/tests/holefill_bench_cgal_fill" CGAL_DATA="$BENCH_OUT/cgal-data" \
+    freecadcmd tests/bench/bench_meshfill.py 2>&1 | grep '^|'
   rm -rf "$HOME"
 )
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

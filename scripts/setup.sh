@@ -11,6 +11,9 @@ PKGS=(
   # libtorch calls the system BLAS: OpenBLAS instead of the reference BLAS makes UVTran 5-10x faster.
   libopenblas0-pthread python3-matplotlib
 )
+# scripts/bench.sh adds the peers' packages (CGAL and its demo data, assimp's test models).
+read -r -a extra <<< "${HOLEFILL_EXTRA_PKGS:-}"
+PKGS+=("${extra[@]}")
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

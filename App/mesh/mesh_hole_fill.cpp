@@ -113,8 +113,9 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
           fill.swaps = ref.swaps;
           if (ref.capped) fill.message += std::string(fill.message.empty() ? "" : "; ") + "refinement stopped at a safety cap";
         }
-        const TangentialSmoothingResult smooth = smoothTangentially(patch, options.smoothing, options.refinement);
-        fill.swaps += smooth.swaps;
+        const QualityResult improved = improvePatchQuality(patch, options.quality, options.refinement);
+        fill.swaps += improved.swaps;
+        fill.splits += improved.splits;
         std::vector<std::vector<Eigen::Vector3d>> outer(n);
         for (int i = 0; i < n; ++i)
           for (int q : neighbours[loop[i]])
@@ -123,6 +124,14 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
         BilateralOptions fairing = options.fairing;
         if (options.fairIterations >= 0) fairing.iterations = options.fairIterations;
         bilateralFair(patch, fairing);
+        // Fairing moved vertices along normals: let smoothing and splits tidy up once more
+        // (each step kept only if the worst triangle does not get worse).
+        QualityOptions tidy = options.quality;
+        tidy.rounds = std::min(tidy.rounds, 2);
+        tidy.smoothing.iterations = std::min(tidy.smoothing.iterations, 3);
+        const QualityResult tidied = improvePatchQuality(patch, tidy, options.refinement);
+        fill.swaps += tidied.swaps;
+        fill.splits += tidied.splits;
 
         const int base = static_cast<int>(nv + newPoints.size());
         auto global = [&](int i) { return i < n ? loop[i] : base + (i - n); };

@@ -18,7 +18,7 @@
 #include "mesh/laplacian_fairing.h"
 #include "mesh/min_angle_triangulation.h"
 #include "mesh/patch_refinement.h"
-#include "mesh/tangential_smoothing.h"
+#include "mesh/quality_improvement.h"
 
 namespace holefill {
 
@@ -29,7 +29,7 @@ struct MeshFillOptions {
   int fairIterations = -1;               // −1: fairing.iterations; 0 switches fairing off
   MinAngleOptions triangulation;
   RefinementOptions refinement;
-  TangentialSmoothingOptions smoothing;  // our addition between refinement and fairing (see its header)
+  QualityOptions quality;                // our addition between refinement and fairing: smoothing and splits (see its header)
   LaplacianFairingOptions shape;         // our addition: Δ^k placement before the bilateral filter (see its header)
   BilateralOptions fairing;
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel (filled holes are kept)

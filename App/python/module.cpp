@@ -290,7 +290,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
       o.maxBoundary = maxBoundary;
       o.refine = refine;
       o.fairIterations = fairIterations;
-      if (smoothIterations >= 0) o.smoothing.iterations = smoothIterations;
+      if (smoothIterations >= 0) o.quality.smoothing.iterations = smoothIterations;
       if (densityFactor > 0) o.refinement.densityFactor = densityFactor;
       if (closenessScale > 0) o.fairing.closenessScale = closenessScale;
       if (featureScale > 0) o.fairing.featureScale = featureScale;
