@@ -34,6 +34,8 @@ echo
   . tests/fcenv.sh "$build/Mod/HoleFill"
   HOLEFILL_BENCH_CGAL="$build/tests/holefill_bench_cgal_fill" CGAL_DATA="$BENCH_OUT/cgal-data" \
     freecadcmd tests/bench/bench_meshfill.py 2>&1 | grep '^|'
+  # Pictures of one hole per case, filled by each method (bench-out/meshfill/*.png).
+  xvfb-run -a -s "-screen 0 1280x1024x24 -dpi 96 -nolisten tcp" timeout 300 freecad tests/bench/meshfill_pictures.py >/dev/null 2>&1 || true
   rm -rf "$HOME"
 )
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

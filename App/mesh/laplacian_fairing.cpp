@@ -1,43 +1,60 @@
 #include "mesh/laplacian_fairing.h"
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 #include <algorithm>
 
 #include "geometry/error.h"
 
 namespace holefill {
 
-void fairLaplacian(HolePatch& patch, const std::vector<std::vector<Eigen::Vector3d>>& outerRing,
-                   const LaplacianFairingOptions& options) {
+void fairLaplacian(HolePatch& patch, const SurroundingRing& ring, const LaplacianFairingOptions& options) {
   const int nb = patch.boundaryCount;
   const int np = static_cast<int>(patch.points.size());
   const int nu = np - nb;
   if (options.order <= 0 || nu <= 0) return;
 
-  // Local index space: patch vertices, then the fixed outer ring.
+  // Local index space: patch vertices, then the fixed ring; one triangle list over both.
   std::vector<Eigen::Vector3d> points = patch.points;
-  std::vector<std::vector<int>> adjacent(np);
-  auto link = [&](int a, int b) {
-    if (std::find(adjacent[a].begin(), adjacent[a].end(), b) == adjacent[a].end()) adjacent[a].push_back(b);
-  };
-  for (const auto& t : patch.triangles)
-    for (int k = 0; k < 3; ++k) { link(t[k], t[(k + 1) % 3]); link(t[(k + 1) % 3], t[k]); }
-  for (int b = 0; b < nb; ++b)
-    for (const Eigen::Vector3d& q : outerRing[b]) {
-      points.push_back(q);
-      adjacent[b].push_back(static_cast<int>(points.size()) - 1);
-    }
+  points.insert(points.end(), ring.points.begin(), ring.points.end());
   const int nAll = static_cast<int>(points.size());
+  std::vector<std::array<int, 3>> triangles = patch.triangles;
+  for (auto t : ring.triangles) {
+    for (int& v : t)
+      if (v >= nb) v = np + (v - nb);
+    triangles.push_back(t);
+  }
+  // Edge weights w_ij (symmetric), accumulated per directed pair from each triangle.
+  std::vector<std::vector<std::pair<int, double>>> weights(nAll);
+  auto add = [&](int i, int j, double w) {
+    for (auto& [k, x] : weights[i])
+      if (k == j) { x += w; return; }
+    weights[i].emplace_back(j, w);
+  };
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3], o = t[(k + 2) % 3];
+      double w = 1.0;
+      if (options.weights == LaplacianWeights::Cotangent) {
+        const Eigen::Vector3d u = points[i] - points[o], v = points[j] - points[o];
+        const double cross = u.cross(v).norm();
+        // Half the cotangent of the angle facing the edge, clamped: obtuse angles would give
+        // negative weights and an indefinite operator.
+        w = cross > 0 ? std::max(0.5 * u.dot(v) / cross, 1e-3) : 1e-3;
+      }
+      add(i, j, w);
+      add(j, i, w);
+    }
 
-  // Uniform Laplacian rows for the patch's vertices (outer-ring rows are never needed: no new
-  // vertex is adjacent to the outer ring).
+  // Normalized Laplacian rows for the patch's vertices (ring rows are never needed: no new
+  // vertex is adjacent to the ring).
   std::vector<Eigen::Triplet<double>> lt;
   for (int i = 0; i < np; ++i) {
-    if (adjacent[i].empty()) continue;
-    const double w = 1.0 / static_cast<double>(adjacent[i].size());
+    double total = 0;
+    for (const auto& [j, w] : weights[i]) total += w;
+    if (!(total > 0)) continue;
     lt.emplace_back(i, i, -1.0);
-    for (int j : adjacent[i]) lt.emplace_back(i, j, w);
+    for (const auto& [j, w] : weights[i]) lt.emplace_back(i, j, w / total);
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor> L(nAll, nAll);
   L.setFromTriplets(lt.begin(), lt.end());
@@ -57,27 +74,35 @@ void fairLaplacian(HolePatch& patch, const std::vector<std::vector<Eigen::Vector
   for (auto& n : normal)
     if (n.norm() > 0) n.normalize();
   std::vector<Eigen::Triplet<double>> at;
-  Eigen::MatrixX3d r = Eigen::MatrixX3d::Zero(nu, 3);  // M applied to the current positions
-  for (int i = nb; i < np; ++i)
+  Eigen::VectorXd rhs(options.alongNormals ? nu : 3 * nu);
+  rhs.setZero();
+  for (int i = nb; i < np; ++i) {
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();  // M applied to the current positions
     for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(M, i); it; ++it) {
       const int j = static_cast<int>(it.col());
       // Σ_j M_ij = 0, so M x = Σ_j M_ij (x_j − x_i): exact zero in the directions the
       // neighbourhood does not vary in (a planar hole stays planar to the last bit).
-      r.row(i - nb) += it.value() * (points[j] - points[i]).transpose();
-      if (j >= nb && j < np)
-        for (int c = 0; c < 3; ++c) at.emplace_back(3 * (i - nb) + c, j - nb, it.value() * normal[j][c]);
+      r += it.value() * (points[j] - points[i]);
+      if (j < nb || j >= np) continue;
+      if (options.alongNormals)
+        at.emplace_back(i - nb, j - nb, it.value() * normal[i].dot(normal[j]));
+      else
+        for (int c = 0; c < 3; ++c) at.emplace_back(3 * (i - nb) + c, 3 * (j - nb) + c, it.value());
     }
-  Eigen::SparseMatrix<double> B(3 * nu, nu);  // residual rows (vertex, coordinate) per offset
-  B.setFromTriplets(at.begin(), at.end());
-  Eigen::VectorXd rv(3 * nu);
-  for (int i = 0; i < nu; ++i) rv.segment<3>(3 * i) = r.row(i).transpose();
-  const Eigen::SparseMatrix<double> A = B.transpose() * B;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    // Along normals only the normal part of Δ^k x must vanish: its tangential part reflects the
+    // vertex layout, which the offsets cannot (and must not try to) change.
+    if (options.alongNormals) rhs[i - nb] = -normal[i].dot(r);
+    else rhs.segment<3>(3 * (i - nb)) = -r;
+  }
+  Eigen::SparseMatrix<double> A(rhs.size(), rhs.size());
+  A.setFromTriplets(at.begin(), at.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
   solver.compute(A);
   if (solver.info() != Eigen::Success) throw Error("the fairing system of the hole is singular");
-  const Eigen::VectorXd h = solver.solve(-(B.transpose() * rv));
+  const Eigen::VectorXd h = solver.solve(rhs);
   if (solver.info() != Eigen::Success || !h.allFinite()) throw Error("the fairing solve of the hole failed");
-  for (int i = 0; i < nu; ++i) patch.points[nb + i] += h[i] * normal[nb + i];
+  for (int i = 0; i < nu; ++i)
+    patch.points[nb + i] += options.alongNormals ? Eigen::Vector3d(h[i] * normal[nb + i]) : Eigen::Vector3d(h.segment<3>(3 * i));
 }
 
 }  // namespace holefill

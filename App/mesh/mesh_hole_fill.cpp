@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "geometry/error.h"
@@ -56,15 +57,14 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
     ++edgeCount[e.a]; ++edgeCount[e.b];
   }
 
-  // The surrounding mesh's neighbours of every boundary vertex, for the fairing's fixed ring.
+  // The surrounding triangles at every boundary vertex, for the fairing's fixed ring.
   std::vector<bool> onBoundary(nv, false);
   for (const MeshHole& h : detection.holes)
     for (int v : h.loop) onBoundary[v] = true;
-  std::vector<std::vector<int>> neighbours(nv);
-  for (const MeshTopology::Edge& e : topo.edges()) {
-    if (onBoundary[e.a]) neighbours[e.a].push_back(e.b);
-    if (onBoundary[e.b]) neighbours[e.b].push_back(e.a);
-  }
+  std::vector<std::vector<int>> incident(nv);
+  for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (onBoundary[mesh.triangles(t, k)]) incident[mesh.triangles(t, k)].push_back(static_cast<int>(t));
 
   std::vector<Eigen::Vector3d> newPoints;
   std::vector<Eigen::Vector3i> newTriangles;
@@ -116,11 +116,34 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
         const QualityResult improved = improvePatchQuality(patch, options.quality, options.refinement);
         fill.swaps += improved.swaps;
         fill.splits += improved.splits;
-        std::vector<std::vector<Eigen::Vector3d>> outer(n);
-        for (int i = 0; i < n; ++i)
-          for (int q : neighbours[loop[i]])
-            if (std::find(loop.begin(), loop.end(), q) == loop.end()) outer[i].push_back(point(q));
-        fairLaplacian(patch, outer, options.shape);
+        SurroundingRing ring;
+        {
+          std::unordered_map<int, int> local;  // mesh vertex → patch/ring index
+          for (int i = 0; i < n; ++i) local[loop[i]] = i;
+          std::unordered_set<int> seen;
+          for (int i = 0; i < n; ++i)
+            for (int t : incident[loop[i]]) {
+              if (!seen.insert(t).second) continue;
+              std::array<int, 3> tri;
+              int c = mesh.triangles(t, 0);
+              for (int k = 0; k < 3; ++k, c = topo.nextVertex(t, c)) {
+                auto it = local.find(c);
+                if (it == local.end()) {
+                  it = local.emplace(c, n + static_cast<int>(ring.points.size())).first;
+                  ring.points.push_back(point(c));
+                }
+                tri[k] = it->second;
+              }
+              ring.triangles.push_back(tri);
+            }
+        }
+        for (int pass = 0; pass < std::max(1, options.shape.passes); ++pass) {
+          if (pass > 0) {
+            PatchEdges edges(patch);
+            fill.swaps += relaxAllEdges(patch, edges, options.refinement);
+          }
+          fairLaplacian(patch, ring, options.shape);
+        }
         BilateralOptions fairing = options.fairing;
         if (options.fairIterations >= 0) fairing.iterations = options.fairIterations;
         bilateralFair(patch, fairing);

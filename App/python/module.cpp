@@ -283,7 +283,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("vertices"), py::arg("triangles"), "Boundary loops of a triangle mesh (JSON: holes longest first, topology counts).");
   m.def("fillMeshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<int>& holes,
                             int maxBoundary, bool refine, int fairIterations, int smoothIterations, double densityFactor,
-                            double closenessScale, double featureScale, const std::function<bool(double)>& progress) {
+                            double closenessScale, double featureScale, const std::function<bool(double)>& progress,
+                            int shapeOrder, int shapePasses, bool alongNormals) {
     return guarded([&] {
       MeshFillOptions o;
       o.holes = holes;
@@ -294,6 +295,9 @@ PYBIND11_MODULE(HoleFillApp, m) {
       if (densityFactor > 0) o.refinement.densityFactor = densityFactor;
       if (closenessScale > 0) o.fairing.closenessScale = closenessScale;
       if (featureScale > 0) o.fairing.featureScale = featureScale;
+      if (shapeOrder >= 0) o.shape.order = shapeOrder;
+      if (shapePasses > 0) o.shape.passes = shapePasses;
+      o.shape.alongNormals = alongNormals;
       if (progress) o.progress = [&](double f) { py::gil_scoped_acquire g; return progress(f); };
       MeshFillResult r;
       {
@@ -305,6 +309,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("maxBoundary") = 0,
      py::arg("refine") = true, py::arg("fairIterations") = -1, py::arg("smoothIterations") = -1, py::arg("densityFactor") = 0.0,
      py::arg("closenessScale") = 0.0, py::arg("featureScale") = 0.0, py::arg("progress") = nullptr,
+     py::arg("shapeOrder") = -1, py::arg("shapePasses") = 0, py::arg("alongNormals") = true,
      "Fill holes of a triangle mesh (Hu et al.): (vertices, triangles, report JSON); the input rows come first, unchanged.");
   m.def("measureMeshFill", [](const Eigen::MatrixX3d& inV, const Eigen::MatrixX3i& inT, const Eigen::MatrixX3d& outV,
                               const Eigen::MatrixX3i& outT, const Eigen::MatrixX3d& gtV, const Eigen::MatrixX3i& gtT) {
