@@ -1,5 +1,6 @@
 """Renders each demo document to a PNG with the real FreeCAD GUI (run under Xvfb by demo.sh):
-the model in grey, the Fill in orange with its edges, isometric view."""
+the model in grey, the Fill in orange with its edges, isometric view; a filled mesh with
+its triangle edges."""
 import glob
 import os
 
@@ -15,10 +16,16 @@ def render():
         for path in sorted(glob.glob(os.path.join(OUT, "*.FCStd"))):
             doc = FreeCAD.openDocument(path)
             FreeCADGui.activateWorkbench("HoleFillWorkbench")
+            filled_mesh = any(o.Name.endswith("_filled") for o in doc.Objects)
             for o in doc.Objects:
                 vo = o.ViewObject
                 vo.Visibility = True
-                if o.Name.startswith("Fill"):
+                if o.isDerivedFrom("Mesh::Feature"):
+                    # Mesh demo: the filled copy with its triangle edges; the source is hidden.
+                    vo.Visibility = o.Name.endswith("_filled") or not filled_mesh
+                    vo.DisplayMode = "Flat Lines"
+                    vo.ShapeColor = (0.72, 0.76, 0.82)
+                elif o.Name.startswith("Fill"):
                     vo.ShapeColor = (0.95, 0.55, 0.15)
                     vo.LineWidth = 2.0
                 else:

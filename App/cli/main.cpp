@@ -26,6 +26,7 @@
 #include "learn/learn_library.h"
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
+#include "mesh/sample_meshes.h"
 
 using namespace holefill;
 
@@ -46,7 +47,7 @@ const char* kUsage =
     "                [--shape-order 0|1|2|3] "
     "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
     "  holefill mesh-holes MESH [--json]\n"
-    "  holefill samples DIR        write the bundled sample models as .brep\n"
+    "  holefill samples DIR        write the bundled sample models (.brep, and scan_with_holes.obj)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
     "  holefill eval uvtran [--weights W] [--samples N] [--split test|validation]\n"
@@ -271,6 +272,9 @@ int cmdSamples(const Args& a) {
     writeShape(samples::byName(n), path);
     std::printf("%s\n", path.c_str());
   }
+  const std::string mesh = a.input + "/scan_with_holes.obj";
+  writeMesh(samples::scanWithHoles(), mesh);
+  std::printf("%s\n", mesh.c_str());
   return 0;
 }
 

@@ -39,25 +39,24 @@ double worst(const HolePatch& patch) {
   return q;
 }
 
+double mean(const HolePatch& patch) {
+  double q = 0;
+  for (const auto& t : patch.triangles) q += quality(patch, t);
+  return patch.triangles.empty() ? 0 : q / static_cast<double>(patch.triangles.size());
+}
+
 }  // namespace
 
 QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& options, const RefinementOptions& relax) {
   QualityResult result;
-  // A step that makes the worst triangle worse (it happens where the hole's loop folds
-  // strongly and smoothing cannot move the new midpoints) is undone, and the rounds stop.
-  double best = worst(patch);
-  {
-    const HolePatch kept = patch;
-    const int swaps = smoothTangentially(patch, options.smoothing, relax).swaps;
-    const double now = worst(patch);
-    if (now < best) {
-      patch = kept;
-      result.minQuality = best;
-      return result;
-    }
-    best = now;
-    result.swaps += swaps;
-  }
+  // Smoothing always runs: it raises the mean a lot (0.83 -> 0.90 on a UV-sphere cap) even
+  // where it costs the boundary-pinned worst triangle a few hundredths. A split round is kept
+  // only when it raises the worst triangle, or raises the mean while losing at most 0.02 on
+  // the worst one: where the hole's loop folds strongly, smoothing cannot place the new
+  // midpoints and a round makes things worse; it is undone and the rounds stop.
+  result.swaps += smoothTangentially(patch, options.smoothing, relax).swaps;
+  double bestMin = worst(patch), bestMean = mean(patch);
+  auto better = [&](double lo, double avg) { return lo > bestMin || (avg > bestMean && lo >= bestMin - 0.02); };
   for (; result.rounds < options.rounds; ++result.rounds) {
     const std::vector<Eigen::Vector3d> keptPoints = patch.points;
     const std::vector<std::array<int, 3>> keptTriangles = patch.triangles;
@@ -96,14 +95,15 @@ QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& option
     }
     if (splits == 0) break;
     const int swaps = relaxAllEdges(patch, edges, relax) + smoothTangentially(patch, options.smoothing, relax).swaps;
-    const double now = worst(patch);
-    if (now < best) {
+    const double lo = worst(patch), avg = mean(patch);
+    if (!better(lo, avg)) {
       patch.points = keptPoints;
       patch.triangles = keptTriangles;
       patch.scale = keptScale;
       break;
     }
-    best = now;
+    bestMin = lo;
+    bestMean = avg;
     result.splits += splits;
     result.swaps += swaps;
   }

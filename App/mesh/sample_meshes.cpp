@@ -81,6 +81,17 @@ TriangleMesh tube(int segments, int rings, double radius, double height, double 
   return fromLists(p, t);
 }
 
+TriangleMesh scanWithHoles() {
+  const TriangleMesh sphere = icosphere(4, 25.0);
+  const Eigen::Vector3d a = Eigen::Vector3d(0, 0, 1), b = Eigen::Vector3d(1, 0.3, 0.2).normalized(),
+                        c = Eigen::Vector3d(-0.4, -1, -0.3).normalized(), d = Eigen::Vector3d(-0.6, -0.9, -0.1).normalized();
+  return cutHole(sphere, [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d u = p.normalized();
+    const bool slot = u.dot(c) > 0.96 || u.dot(d) > 0.96 || u.dot((c + d).normalized()) > 0.96;  // elongated
+    return u.dot(a) > 0.9 || u.dot(b) > 0.97 || slot;
+  }).mesh;
+}
+
 CutResult cutHole(const TriangleMesh& mesh, const std::function<bool(const Eigen::Vector3d&)>& inside) {
   std::vector<Eigen::Vector3i> kept, removed;
   for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {

@@ -18,6 +18,10 @@ TriangleMesh icosphere(int level, double radius = 1.0);
 // squash < 1 scales y, for an elliptic cross-section.
 TriangleMesh tube(int segments, int rings, double radius, double height, double squash = 1.0);
 
+// The bundled demo mesh (Resources/samples/scan_with_holes.obj): a sphere of radius 25 (a
+// level-4 icosphere, 2562 vertices) with three holes of different sizes, one of them elongated.
+TriangleMesh scanWithHoles();
+
 struct CutResult {
   TriangleMesh mesh;                     // what is left, unused vertices removed
   TriangleMesh removed;                  // the cut-out triangles (ground truth)
