@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "geometry/error.h"
+
 namespace holefill {
 
 PatchEdges::PatchEdges(const HolePatch& patch) {
@@ -10,20 +12,29 @@ PatchEdges::PatchEdges(const HolePatch& patch) {
 }
 
 void PatchEdges::add(const std::array<int, 3>& tri, int t) {
-  for (int k = 0; k < 3; ++k) map_[key(tri[k], tri[(k + 1) % 3])].push_back(t);
+  for (int k = 0; k < 3; ++k) {
+    EdgeTriangles& e = map_[key(tri[k], tri[(k + 1) % 3])];
+    HF_CHECK(e.n < 2, "a patch edge would get a third triangle");
+    e.t[e.n++] = t;
+  }
 }
 
 void PatchEdges::remove(const std::array<int, 3>& tri, int t) {
   for (int k = 0; k < 3; ++k) {
     auto it = map_.find(key(tri[k], tri[(k + 1) % 3]));
     if (it == map_.end()) continue;
-    auto& list = it->second;
-    list.erase(std::remove(list.begin(), list.end(), t), list.end());
-    if (list.empty()) map_.erase(it);
+    EdgeTriangles& e = it->second;
+    if (e.n == 2 && e.t[0] == t) {
+      e.t[0] = e.t[1];
+      e.n = 1;
+    } else if (e.n > 0 && e.t[e.n - 1] == t) {
+      --e.n;
+    }
+    if (e.n == 0) map_.erase(it);
   }
 }
 
-const std::vector<int>* PatchEdges::find(int u, int v) const {
+const EdgeTriangles* PatchEdges::find(int u, int v) const {
   auto it = map_.find(key(u, v));
   return it == map_.end() ? nullptr : &it->second;
 }

@@ -26,6 +26,17 @@ struct HolePatch {
   bool isNew(int v) const { return v >= boundaryCount; }
 };
 
+// The patch triangles on one edge: one on a loop edge, two on an interior edge, never more
+// (the patch is a disk). A fixed pair, not a vector: edits touch these maps millions of times.
+struct EdgeTriangles {
+  int t[2] = {-1, -1};
+  int n = 0;
+  size_t size() const { return static_cast<size_t>(n); }
+  int operator[](int k) const { return t[k]; }
+  const int* begin() const { return t; }
+  const int* end() const { return t + n; }
+};
+
 // Undirected edge → patch triangles on it, kept up to date by the refinement's edits.
 class PatchEdges {
 public:
@@ -36,11 +47,11 @@ public:
   }
   void add(const std::array<int, 3>& tri, int t);
   void remove(const std::array<int, 3>& tri, int t);
-  const std::vector<int>* find(int u, int v) const;
+  const EdgeTriangles* find(int u, int v) const;
   bool has(int u, int v) const { return find(u, v) != nullptr; }
 
 private:
-  std::unordered_map<std::uint64_t, std::vector<int>> map_;
+  std::unordered_map<std::uint64_t, EdgeTriangles> map_;
 };
 
 // Unit normal of a patch triangle (zero when degenerate), unnormalized cross product in `area2`.

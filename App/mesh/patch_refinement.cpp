@@ -9,10 +9,11 @@ namespace holefill {
 
 namespace {
 
-// The angle at r of triangle (p, q, r).
-double angleAt(const Eigen::Vector3d& r, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+// cot of the angle at r of triangle (p, q, r); +inf-like for a degenerate triangle.
+double cotAt(const Eigen::Vector3d& r, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
   const Eigen::Vector3d u = p - r, v = q - r;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
+  const double cross = u.cross(v).norm();
+  return cross > 0 ? u.dot(v) / cross : (u.dot(v) >= 0 ? 1e300 : -1e300);
 }
 
 int opposite(const std::array<int, 3>& tri, int u, int v) {
@@ -23,7 +24,7 @@ int opposite(const std::array<int, 3>& tri, int u, int v) {
 
 // Swaps edge (u, v) if the circumsphere test asks for it and the swap is valid.
 bool relaxEdge(HolePatch& patch, PatchEdges& edges, int u, int v, const RefinementOptions& options) {
-  const std::vector<int>* on = edges.find(u, v);
+  const EdgeTriangles* on = edges.find(u, v);
   if (!on || on->size() != 2) return false;
   const int t0 = (*on)[0], t1 = (*on)[1];
   std::array<int, 3> A = patch.triangles[t0], B = patch.triangles[t1];
@@ -37,7 +38,8 @@ bool relaxEdge(HolePatch& patch, PatchEdges& edges, int u, int v, const Refineme
   // s inside the circumsphere of (p, q, r) in the plane of the quad is the same as the two
   // angles facing the edge summing to more than π; unlike the two sphere tests, the angle sum
   // is symmetric in the triangles, so on a curved patch a swap is never undone by the next test.
-  if (angleAt(P[r], P[p], P[q]) + angleAt(P[s], P[p], P[q]) <= M_PI * (1 + 1e-9)) return false;
+  // For angles in (0, π), α + β > π exactly when cot α + cot β < 0 (no trigonometry needed).
+  if (cotAt(P[r], P[p], P[q]) + cotAt(P[s], P[p], P[q]) >= -1e-9) return false;
   if (edges.has(r, s)) return false;
   if (!patch.isNew(r) && !patch.isNew(s) && patch.outsideEdge(r, s)) return false;
   const std::array<int, 3> C = {r, p, s}, D = {s, q, r};
@@ -73,7 +75,7 @@ int relaxEdges(HolePatch& patch, PatchEdges& edges, std::vector<std::pair<int, i
     }
     const auto [u, v] = work.back();
     work.pop_back();
-    const std::vector<int>* on = edges.find(u, v);
+    const EdgeTriangles* on = edges.find(u, v);
     if (!on || on->size() != 2) continue;
     const int t0 = (*on)[0], t1 = (*on)[1];
     if (!relaxEdge(patch, edges, u, v, options)) continue;

@@ -14,7 +14,7 @@ double quality(const HolePatch& p, const std::array<int, 3>& t) {
 
 // Splits edge (u, v), shared by two patch triangles, at its midpoint.
 void splitEdge(HolePatch& patch, PatchEdges& edges, int u, int v) {
-  const std::vector<int> on = *edges.find(u, v);
+  const EdgeTriangles on = *edges.find(u, v);
   const int m = static_cast<int>(patch.points.size());
   patch.points.push_back(0.5 * (patch.points[u] + patch.points[v]));
   patch.scale.push_back(0.5 * (patch.scale[u] + patch.scale[v]));
@@ -78,7 +78,7 @@ QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& option
       double longest = 0;
       for (int k = 0; k < 3; ++k) {
         const int u = tri[k], v = tri[(k + 1) % 3];
-        const std::vector<int>* on = edges.find(u, v);
+        const EdgeTriangles* on = edges.find(u, v);
         const double len = (patch.points[u] - patch.points[v]).norm();
         if (on && on->size() == 2 && len > longest && !touched[(*on)[0]] && !touched[(*on)[1]]) {
           longest = len;
@@ -94,7 +94,10 @@ QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& option
       ++splits;
     }
     if (splits == 0) break;
-    const int swaps = relaxAllEdges(patch, edges, relax) + smoothTangentially(patch, options.smoothing, relax).swaps;
+    // After a few splits only their neighbourhoods need settling: a short smoothing suffices.
+    TangentialSmoothingOptions settle = options.smoothing;
+    settle.iterations = std::min(settle.iterations, options.roundSweeps);
+    const int swaps = relaxAllEdges(patch, edges, relax) + smoothTangentially(patch, settle, relax).swaps;
     const double lo = worst(patch), avg = mean(patch);
     if (!better(lo, avg)) {
       patch.points = keptPoints;

@@ -19,6 +19,7 @@ namespace holefill {
 struct QualityOptions {
   double target = 0.6;                 // new triangles below this Field quality get a split
   int rounds = 6;                      // split rounds (each followed by smoothing and relaxation)
+  int roundSweeps = 3;                 // smoothing sweeps after each split round (the first smoothing runs all)
   TangentialSmoothingOptions smoothing;
 };
 
