@@ -107,6 +107,11 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
         const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, options.triangulation);
         patch.triangles = tri.triangles;
         fill.sigma = tri.sigma;
+        HolePatch bare = patch;  // the relaxed minimum-angle triangulation, kept for tiny holes (below)
+        {
+          PatchEdges edges(bare);
+          relaxAllEdges(bare, edges, options.refinement);
+        }
         if (options.refine) {
           const RefinementResult ref = refinePatch(patch, options.refinement);
           fill.splits = ref.splits;
@@ -156,6 +161,22 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
         fill.swaps += tidied.swaps;
         fill.splits += tidied.splits;
 
+        // A planar hole whose bare triangulation already has the better worst triangle (a
+        // removed sliver, a 3-vertex gap) is kept bare: new vertices cannot improve its shape,
+        // which the bare triangles carry exactly, and here they only spoil its worst triangle.
+        auto worstOf = [](const HolePatch& p) {
+          double q = 1;
+          for (const auto& t : p.triangles) q = std::min(q, triangleQuality(p.points[t[0]], p.points[t[1]], p.points[t[2]]));
+          return q;
+        };
+        if (options.keepBetterBare && worstOf(bare) > worstOf(patch)) {
+          Eigen::MatrixX3d P(n, 3);
+          for (int i = 0; i < n; ++i) P.row(i) = bare.points[i].transpose();
+          const Eigen::RowVector3d c = P.colwise().mean();
+          const Eigen::MatrixX3d D = P.rowwise() - c;
+          const double spread = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(D.transpose() * D / n).eigenvalues()[0]));
+          if (spread <= 1e-3 * boundingDiagonal(P)) patch = bare;
+        }
         const int base = static_cast<int>(nv + newPoints.size());
         auto global = [&](int i) { return i < n ? loop[i] : base + (i - n); };
         for (size_t i = n; i < patch.points.size(); ++i) {

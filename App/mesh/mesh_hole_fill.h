@@ -27,6 +27,8 @@ struct MeshFillOptions {
   std::vector<int> holes;                // indices into findMeshHoles(mesh).holes; empty: every fillable hole
   bool refine = true;                    // density refinement (off: the bare minimum-angle triangulation)
   int fairIterations = -1;               // −1: fairing.iterations; 0 switches fairing off
+  bool keepBetterBare = true;            // a planar hole keeps its bare triangulation when that has the better
+                                         // worst triangle (a removed sliver, a 3-vertex gap)
   MinAngleOptions triangulation;
   RefinementOptions refinement;
   QualityOptions quality;                // our addition between refinement and fairing: smoothing and splits (see its header)

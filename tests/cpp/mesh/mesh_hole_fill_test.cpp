@@ -299,3 +299,32 @@ TEST(MeshHoleFill, DuplicatedSeamVerticesSplitTheLoop) {
   // Once the copies are welded, only the outer border is open.
   EXPECT_EQ(countBoundaryEdges(r.mesh, weldMap(r.mesh.vertices, 1e-12)), 24);
 }
+
+TEST(MeshHoleFill, PlanarSliverHoleGetsBackItsTriangle) {
+  // A needle-shaped hole (q = 0.087) in a coarse plane, refined hard (α = 6): the splits cannot
+  // improve a planar three-vertex hole, only spoil it (q 0.003 with 74 new vertices when the
+  // bare fallback is off), so the fill is the missing triangle itself.
+  TriangleMesh m;
+  m.vertices.resize(7, 3);
+  m.vertices << -2, -2, 0, 8, -2, 0, 8, 12, 0, -2, 12, 0, 0, 0, 0, 0.6, 0, 0, 5, 10, 0;
+  m.triangles.resize(7, 3);
+  m.triangles << 0, 1, 5, 0, 5, 4, 1, 2, 5, 5, 2, 6, 2, 3, 6, 6, 3, 4, 3, 0, 4;
+  const MeshHoleReport holes = findMeshHoles(m);
+  int needle = -1;
+  for (size_t h = 0; h < holes.holes.size(); ++h)
+    if (holes.holes[h].loop.size() == 3) needle = static_cast<int>(h);
+  ASSERT_GE(needle, 0);
+  MeshFillOptions o;
+  o.holes = {needle};
+  o.refinement.densityFactor = 6;
+  const MeshHoleFill f = fillMeshHoles(m, o).fills[needle];
+  ASSERT_TRUE(f.filled) << f.message;
+  EXPECT_EQ(f.newVertices, 0);
+  EXPECT_EQ(f.newTriangles, 1);
+  const double q = triangleQuality(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.6, 0, 0), Eigen::Vector3d(5, 10, 0));
+  EXPECT_NEAR(f.minQuality, q, 1e-12);
+  o.keepBetterBare = false;
+  const MeshHoleFill spoiled = fillMeshHoles(m, o).fills[needle];
+  EXPECT_GT(spoiled.newVertices, 0);
+  EXPECT_LT(spoiled.minQuality, q);
+}
