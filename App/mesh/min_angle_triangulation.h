@@ -9,6 +9,8 @@
 // neighbour; if no ear passes, σ is dropped first and the fold test second.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Dense>
 #include <array>
 #include <functional>

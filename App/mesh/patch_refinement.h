@@ -11,6 +11,8 @@
 // holes that never split still get Delaunay-like triangles.
 #pragma once
 
+#include <cmath>
+
 #include <string>
 
 #include "mesh/hole_patch.h"

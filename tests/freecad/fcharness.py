@@ -10,6 +10,18 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__)))) 
 import fc_exit  # noqa: E402
 
 
+def expect_error(fn, *words):
+    """Calls fn, which must raise HoleFill.HoleFillError whose message holds every word; returns it."""
+    import HoleFill
+    try:
+        fn()
+    except HoleFill.HoleFillError as e:
+        for w in words:
+            assert w in str(e), "message %r lacks %r" % (str(e), w)
+        return str(e)
+    raise AssertionError("no HoleFillError raised")
+
+
 def run(namespace):
     tests = sorted((n, f) for n, f in namespace.items() if n.startswith("test_") and callable(f))
     passed, failed = 0, []

@@ -19,16 +19,6 @@ def load(name):
     return s
 
 
-def expect_error(fn, *words):
-    try:
-        fn()
-    except HoleFill.HoleFillError as e:
-        for w in words:
-            assert w in str(e), "message %r lacks %r" % (str(e), w)
-        return str(e)
-    raise AssertionError("no HoleFillError raised")
-
-
 def test_find_holes_on_samples():
     expected = {"cc_valence5": (5, 10), "filleted_box_corner": (3, 3), "panel_6_sided": (6, 6)}
     for name, (n, edges) in expected.items():
@@ -89,16 +79,16 @@ def test_unreachable_g2_is_reported_not_downgraded():
 def test_bad_inputs_give_clear_errors_and_modify_nothing():
     shape = load("panel_6_sided")
     before = shape.exportBrepToString()
-    expect_error(lambda: HoleFill.findHoles(Part.Shape()), "empty")
-    expect_error(lambda: HoleFill.fillHole(load("closed_box")), "no holes")
-    expect_error(lambda: HoleFill.fillHole(shape, ["Edge999"]), "no hole loop contains")
-    expect_error(lambda: HoleFill.fillHole(shape, ["Face1"]), "not an edge name")
-    expect_error(lambda: HoleFill.fillHole(shape, 1, method="foo"), "unknown method")
-    expect_error(lambda: HoleFill.fillHole(shape, 1, continuity="G5"), "unknown continuity")
-    expect_error(lambda: HoleFillApp.findHoles("garbage, not BREP"), "BREP")
+    fcharness.expect_error(lambda: HoleFill.findHoles(Part.Shape()), "empty")
+    fcharness.expect_error(lambda: HoleFill.fillHole(load("closed_box")), "no holes")
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, ["Edge999"]), "no hole loop contains")
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, ["Face1"]), "not an edge name")
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, method="foo"), "unknown method")
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, continuity="G5"), "unknown continuity")
+    fcharness.expect_error(lambda: HoleFillApp.findHoles("garbage, not BREP"), "BREP")
     nan = Part.Vertex(FreeCAD.Vector(float("nan"), 0, 0))
-    expect_error(lambda: HoleFill.findHoles(Part.Compound([shape.copy(), nan])), "NaN")
-    expect_error(lambda: HoleFill.fillHole(shape, 1, progress=lambda f: f < 0.2), "cancelled")
+    fcharness.expect_error(lambda: HoleFill.findHoles(Part.Compound([shape.copy(), nan])), "NaN")
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, progress=lambda f: f < 0.2), "cancelled")
     assert shape.exportBrepToString() == before
 
 
@@ -133,14 +123,14 @@ def test_failed_make_fill_leaves_document_as_it_was():
     src.Shape = load("closed_box")
     doc.recompute()
     names = [o.Name for o in doc.Objects]
-    expect_error(lambda: HoleFill.makeFill(src), "no holes")
+    fcharness.expect_error(lambda: HoleFill.makeFill(src), "no holes")
     assert [o.Name for o in doc.Objects] == names
     # A fill object that is created and then fails to compute is taken out again.
     panel = doc.addObject("Part::Feature", "Panel")
     panel.Shape = load("panel_6_sided")
     doc.recompute()
     names = [o.Name for o in doc.Objects]
-    expect_error(lambda: HoleFill.makeFill(panel, ["Edge999"]), "fill failed")
+    fcharness.expect_error(lambda: HoleFill.makeFill(panel, ["Edge999"]), "fill failed")
     assert [o.Name for o in doc.Objects] == names, [o.Name for o in doc.Objects]
     FreeCAD.closeDocument(doc.Name)
 
@@ -166,7 +156,7 @@ def test_uvtran_method_projection_surface_and_fallback():
         face, rep = HoleFill.fillHole(shape, 1, method="uvtran")
         assert rep["method"] == "uvtran:mvc" and rep["status"] == "ok", rep["method"]
         assert any("uvtran failed" in w and "corrupt" in w for w in rep["warnings"]), rep["warnings"]
-        expect_error(lambda: HoleFill.projectionSurface(shape, 1), "corrupt")
+        fcharness.expect_error(lambda: HoleFill.projectionSurface(shape, 1), "corrupt")
     finally:
         del os.environ["HOLEFILL_UVTRAN_WEIGHTS"]
 

@@ -20,16 +20,6 @@ def sphere_with_cap_hole(radius=2.0, cap=0.6):
     return m
 
 
-def expect_error(fn, *words):
-    try:
-        fn()
-    except HoleFill.HoleFillError as e:
-        for w in words:
-            assert w in str(e), "message %r lacks %r" % (str(e), w)
-        return str(e)
-    raise AssertionError("no HoleFillError raised")
-
-
 def test_sphere_hole_is_filled_closed_and_keeps_the_input():
     m = sphere_with_cap_hole()
     before = m.Topology
@@ -88,23 +78,23 @@ def test_make_mesh_fill_adds_an_object_in_one_undo_step():
     closed = doc.addObject("Mesh::Feature", "Closed")
     closed.Mesh = Mesh.createSphere(1.0, 20)
     count = len(doc.Objects)
-    expect_error(lambda: HoleFill.makeMeshFill(closed), "no hole was filled", "no holes")
+    fcharness.expect_error(lambda: HoleFill.makeMeshFill(closed), "no hole was filled", "no holes")
     assert len(doc.Objects) == count
     FreeCAD.closeDocument(doc.Name)
 
 
 def test_bad_meshes_give_clear_errors():
-    expect_error(lambda: HoleFill.fillMeshHoles(Mesh.Mesh()), "empty")
+    fcharness.expect_error(lambda: HoleFill.fillMeshHoles(Mesh.Mesh()), "empty")
     v = FreeCAD.Vector
     nan = ([v(0, 0, 0), v(1, 0, 0), v(float("nan"), 1, 0)], [(0, 1, 2)])
-    expect_error(lambda: HoleFill.fillMeshHoles(nan), "vertex 2", "not finite")
-    expect_error(lambda: HoleFill.fillMeshHoles(([v(0, 0, 0), v(1, 0, 0), v(0, 1, 0)], [(0, 1, 7)])), "out of range", "vertex 7")
+    fcharness.expect_error(lambda: HoleFill.fillMeshHoles(nan), "vertex 2", "not finite")
+    fcharness.expect_error(lambda: HoleFill.fillMeshHoles(([v(0, 0, 0), v(1, 0, 0), v(0, 1, 0)], [(0, 1, 7)])), "out of range", "vertex 7")
     tmp = tempfile.mkdtemp()
     bad = os.path.join(tmp, "broken.off")
     with open(bad, "w") as f:
         f.write("OFF\n100000000 3 0\n0 0 0\n")
-    expect_error(lambda: HoleFill.readMesh(bad), "truncated")
-    expect_error(lambda: HoleFill.readMesh(os.path.join(tmp, "missing.stl")), "cannot open")
+    fcharness.expect_error(lambda: HoleFill.readMesh(bad), "truncated")
+    fcharness.expect_error(lambda: HoleFill.readMesh(os.path.join(tmp, "missing.stl")), "cannot open")
     # Round trip through our writer and reader keeps every point and facet.
     m = sphere_with_cap_hole()
     path = os.path.join(tmp, "m.ply")

@@ -49,6 +49,27 @@ def run(fn, delay_ms=0):
     QtCore.QTimer.singleShot(delay_ms, wrapper)
 
 
+def run_expecting_message(command):
+    """Runs a FreeCAD command that should refuse with a message box; closes the box and
+    returns its text ("" when none appeared)."""
+    import FreeCADGui
+    from PySide2 import QtCore, QtWidgets
+    seen = []
+
+    def close_box():
+        w = QtWidgets.QApplication.activeModalWidget()
+        if isinstance(w, QtWidgets.QMessageBox):
+            seen.append(w.text())
+            w.accept()
+        elif not seen:
+            QtCore.QTimer.singleShot(100, close_box)
+
+    QtCore.QTimer.singleShot(200, close_box)
+    FreeCADGui.runCommand(command)
+    pump(500)
+    return seen[0] if seen else ""
+
+
 def sample_document(doc_name, label, sample):
     """A new document holding one bundled sample model (Resources/samples/<sample>.brep)."""
     import FreeCAD

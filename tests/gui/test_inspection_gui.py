@@ -6,7 +6,7 @@ with a clear message. Overlay nodes are asserted in the scene graph, screenshots
 checked not to be blank; the document is never modified by any of it."""
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide2 import QtWidgets
 
 import guiharness as h
 
@@ -45,24 +45,6 @@ def button(which):
         if box.isVisible() and b is not None and b.isVisible():
             return b
     return None
-
-
-def run_expecting_message(command):
-    """Runs a command that should refuse with a message box; returns the box's text."""
-    seen = []
-
-    def close_box():
-        w = QtWidgets.QApplication.activeModalWidget()
-        if isinstance(w, QtWidgets.QMessageBox):
-            seen.append(w.text())
-            w.accept()
-        elif not seen:
-            QtCore.QTimer.singleShot(100, close_box)
-
-    QtCore.QTimer.singleShot(200, close_box)
-    FreeCADGui.runCommand(command)
-    h.pump(500)
-    return seen[0] if seen else ""
 
 
 def body():
@@ -178,19 +160,19 @@ def body():
 
     # 4. Bad selections: a clear message, no overlay, no panel.
     FreeCADGui.Selection.clearSelection()
-    info["msg_none"] = run_expecting_message("HoleFill_CurvatureMap")
+    info["msg_none"] = h.run_expecting_message("HoleFill_CurvatureMap")
     assert "Select faces" in info["msg_none"], info["msg_none"]
     mesh = doc.addObject("Mesh::Feature", "Scan")
     mesh.Mesh = Mesh.Mesh(Part.makeBox(1, 1, 1).tessellate(0.1))
     doc.recompute()
     FreeCADGui.Selection.addSelection(mesh)
-    info["msg_mesh"] = run_expecting_message("HoleFill_ZebraStripes")
+    info["msg_mesh"] = h.run_expecting_message("HoleFill_ZebraStripes")
     assert "is a mesh" in info["msg_mesh"], info["msg_mesh"]
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(src, "Edge1")
-    info["msg_edge"] = run_expecting_message("HoleFill_CurvatureMap")
+    info["msg_edge"] = h.run_expecting_message("HoleFill_CurvatureMap")
     assert "Only edges" in info["msg_edge"], info["msg_edge"]
-    info["msg_cont"] = run_expecting_message("HoleFill_ContinuityCheck")
+    info["msg_cont"] = h.run_expecting_message("HoleFill_ContinuityCheck")
     assert "two adjacent faces" in info["msg_cont"], info["msg_cont"]
     assert not overlays(), [n.getName().getString() for n in overlays()]
     doc.removeObject("Scan")

@@ -42,23 +42,6 @@ def line_colors(node):
     return out
 
 
-def run_expecting_message(command):
-    seen = []
-
-    def close_box():
-        w = QtWidgets.QApplication.activeModalWidget()
-        if isinstance(w, QtWidgets.QMessageBox):
-            seen.append(w.text())
-            w.accept()
-        elif not seen:
-            QtCore.QTimer.singleShot(100, close_box)
-
-    QtCore.QTimer.singleShot(200, close_box)
-    FreeCADGui.runCommand(command)
-    h.pump(500)
-    return seen[0] if seen else ""
-
-
 def body():
     import Mesh
     import Part
@@ -81,13 +64,13 @@ def body():
 
     # Bad selections first: a message each, nothing added.
     FreeCADGui.Selection.clearSelection()
-    msg = run_expecting_message("HoleFill_FillMeshHoles")
+    msg = h.run_expecting_message("HoleFill_FillMeshHoles")
     assert "Select one mesh object" in msg, msg
     part = doc.addObject("Part::Feature", "Box")
     part.Shape = Part.makeBox(1, 1, 1, FreeCAD.Vector(20, 0, 0))
     doc.recompute()
     FreeCADGui.Selection.addSelection(part)
-    msg = run_expecting_message("HoleFill_FillMeshHoles")
+    msg = h.run_expecting_message("HoleFill_FillMeshHoles")
     assert "holds no mesh" in msg, msg
     doc.removeObject("Box")
     doc.recompute()

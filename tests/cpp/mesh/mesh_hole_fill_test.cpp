@@ -57,6 +57,18 @@ samples::CutResult planeWithPolygonHole(const std::vector<Eigen::Vector2d>& poly
   });
 }
 
+// A 6×6 grid with squares (2,2) and (3,3) removed: two holes meeting only at the vertex (3,3).
+std::vector<Eigen::Vector3i> gridWithoutTwoDiagonalSquares(const TriangleMesh& plane) {
+  std::vector<Eigen::Vector3i> kept;
+  for (Eigen::Index t = 0; t < plane.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = plane.triangles.row(t).transpose();
+    const Eigen::Vector3d c = (plane.vertices.row(f[0]) + plane.vertices.row(f[1]) + plane.vertices.row(f[2])).transpose() / 3;
+    const bool a = c.x() > 2 && c.x() < 3 && c.y() > 2 && c.y() < 3, b = c.x() > 3 && c.x() < 4 && c.y() > 3 && c.y() < 4;
+    if (!a && !b) kept.push_back(f);
+  }
+  return kept;
+}
+
 }  // namespace
 
 TEST(MeshHoleFill, PlanarHoleStaysInItsPlane) {
@@ -176,14 +188,7 @@ TEST(MeshHoleFill, TwoThousandVertexLoopsCapATube) {
 TEST(MeshHoleFill, TwoHolesSharingAVertexAreFilledSeparately) {
   // Two triangles of a grid removed so that their holes meet only at one vertex.
   TriangleMesh plane = samples::gridPlane(6, 6, 1.0);
-  // Squares (2,2) and (3,3) share the corner (3,3); remove both squares' triangles.
-  std::vector<Eigen::Vector3i> kept;
-  for (Eigen::Index t = 0; t < plane.triangles.rows(); ++t) {
-    const Eigen::Vector3i f = plane.triangles.row(t).transpose();
-    const Eigen::Vector3d c = (plane.vertices.row(f[0]) + plane.vertices.row(f[1]) + plane.vertices.row(f[2])).transpose() / 3;
-    const bool a = c.x() > 2 && c.x() < 3 && c.y() > 2 && c.y() < 3, b = c.x() > 3 && c.x() < 4 && c.y() > 3 && c.y() < 4;
-    if (!a && !b) kept.push_back(f);
-  }
+  const std::vector<Eigen::Vector3i> kept = gridWithoutTwoDiagonalSquares(plane);
   TriangleMesh m = plane;
   m.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
   for (size_t i = 0; i < kept.size(); ++i) m.triangles.row(i) = kept[i].transpose();
@@ -270,13 +275,7 @@ TEST(MeshHoleFill, DuplicatedSeamVerticesSplitTheLoop) {
   // A plane with a hole whose border passes a vertex twice through two coincident copies:
   // the triangles on one side of the pinch use a copy of the vertex.
   TriangleMesh plane = samples::gridPlane(6, 6, 1.0);
-  std::vector<Eigen::Vector3i> kept;
-  for (Eigen::Index t = 0; t < plane.triangles.rows(); ++t) {
-    const Eigen::Vector3i f = plane.triangles.row(t).transpose();
-    const Eigen::Vector3d c = (plane.vertices.row(f[0]) + plane.vertices.row(f[1]) + plane.vertices.row(f[2])).transpose() / 3;
-    const bool a = c.x() > 2 && c.x() < 3 && c.y() > 2 && c.y() < 3, b = c.x() > 3 && c.x() < 4 && c.y() > 3 && c.y() < 4;
-    if (!a && !b) kept.push_back(f);
-  }
+  const std::vector<Eigen::Vector3i> kept = gridWithoutTwoDiagonalSquares(plane);
   TriangleMesh m = plane;
   m.vertices.conservativeResize(plane.vertices.rows() + 1, 3);
   const int pinch = 3 * 7 + 3, copy = static_cast<int>(plane.vertices.rows());
