@@ -14,7 +14,7 @@
 namespace holefill {
 
 struct TangentialSmoothingOptions {
-  int iterations = 10;                 // sweeps (0 switches the step off)
+  int iterations = 4;                  // sweeps (0 switches the step off); more changed nothing measurable on the benchmark
   double step = 1.0;                   // share of the way to the 1-ring centroid per sweep
 };
 
