@@ -104,9 +104,13 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
           across[i] = orientedNormal(hole.edgeTriangles[i]).normalized();
         }
         patch.outsideEdge = [&](int i, int j) { return joined(loop[i], loop[j]); };
-        const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, options.triangulation);
-        patch.triangles = tri.triangles;
-        fill.sigma = tri.sigma;
+        if (options.initial == MeshFillOptions::Triangulation::MinDihedral && n <= options.maxDihedralLoop) {
+          patch.triangles = triangulateMinDihedral(patch.points, across, patch.outsideEdge);
+        } else {
+          const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, options.triangulation);
+          patch.triangles = tri.triangles;
+          fill.sigma = tri.sigma;
+        }
         HolePatch bare = patch;  // the relaxed minimum-angle triangulation, kept for tiny holes (below)
         {
           PatchEdges edges(bare);

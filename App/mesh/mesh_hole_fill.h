@@ -17,6 +17,7 @@
 #include "mesh/mesh_holes.h"
 #include "mesh/laplacian_fairing.h"
 #include "mesh/min_angle_triangulation.h"
+#include "mesh/min_dihedral_triangulation.h"
 #include "mesh/patch_refinement.h"
 #include "mesh/quality_improvement.h"
 
@@ -26,6 +27,11 @@ struct MeshFillOptions {
   int maxBoundary = 0;                   // holes with more boundary vertices stay open (0: no limit)
   std::vector<int> holes;                // indices into findMeshHoles(mesh).holes; empty: every fillable hole
   bool refine = true;                    // density refinement (off: the bare minimum-angle triangulation)
+  // The initial triangulation: the paper's minimum-angle ear cutting, or Liepa's minimum-
+  // dihedral dynamic program (the CGAL peer's; loops longer than maxDihedralLoop fall back to
+  // minimum angle, the program being cubic).
+  enum class Triangulation { MinAngle, MinDihedral } initial = Triangulation::MinAngle;
+  int maxDihedralLoop = 400;
   int fairIterations = -1;               // −1: fairing.iterations; 0 switches fairing off
   bool keepBetterBare = true;            // a planar hole keeps its bare triangulation when that has the better
                                          // worst triangle (a removed sliver, a 3-vertex gap)

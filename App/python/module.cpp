@@ -284,7 +284,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   m.def("fillMeshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<int>& holes,
                             int maxBoundary, bool refine, int fairIterations, int smoothIterations, double densityFactor,
                             double closenessScale, double featureScale, const std::function<bool(double)>& progress,
-                            int shapeOrder, int shapePasses, bool alongNormals) {
+                            int shapeOrder, int shapePasses, bool alongNormals, const std::string& triangulation) {
     return guarded([&] {
       MeshFillOptions o;
       o.holes = holes;
@@ -298,6 +298,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
       if (shapeOrder >= 0) o.shape.order = shapeOrder;
       if (shapePasses > 0) o.shape.passes = shapePasses;
       o.shape.alongNormals = alongNormals;
+      if (triangulation == "dihedral") o.initial = MeshFillOptions::Triangulation::MinDihedral;
+      else if (triangulation != "angle") throw Error("unknown triangulation '" + triangulation + "': use angle or dihedral");
       if (progress) o.progress = [&](double f) { py::gil_scoped_acquire g; return progress(f); };
       MeshFillResult r;
       {
@@ -309,7 +311,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("maxBoundary") = 0,
      py::arg("refine") = true, py::arg("fairIterations") = -1, py::arg("smoothIterations") = -1, py::arg("densityFactor") = 0.0,
      py::arg("closenessScale") = 0.0, py::arg("featureScale") = 0.0, py::arg("progress") = nullptr,
-     py::arg("shapeOrder") = -1, py::arg("shapePasses") = 0, py::arg("alongNormals") = true,
+     py::arg("shapeOrder") = -1, py::arg("shapePasses") = 0, py::arg("alongNormals") = true, py::arg("triangulation") = "angle",
      "Fill holes of a triangle mesh (Hu et al.): (vertices, triangles, report JSON); the input rows come first, unchanged.");
   m.def("measureMeshFill", [](const Eigen::MatrixX3d& inV, const Eigen::MatrixX3i& inT, const Eigen::MatrixX3d& outV,
                               const Eigen::MatrixX3i& outT, const Eigen::MatrixX3d& gtV, const Eigen::MatrixX3i& gtT) {

@@ -52,6 +52,7 @@ expect_error "hole out of range" 1 mesh-fill "$T/open_box.obj" --out "$T/o.obj" 
 expect_error "closed mesh: no hole 0" 1 mesh-fill "$T/closed.obj" --out "$T/o.obj" --holes 0
 expect_error "closed mesh: nothing to fill" 1 mesh-fill "$T/closed.obj" --out "$T/o.obj"
 expect_error "hole too long for --max-boundary" 2 mesh-fill "$T/open_box.obj" --out "$T/o.obj" --max-boundary 3
+expect_error "bad triangulation" 1 mesh-fill "$T/open_box.obj" --out "$T/o.obj" --triangulation ears
 expect_error "unwritable output" 1 mesh-fill "$T/open_box.obj" --out "$T/no/such/dir/o.obj"
 # A good fill: exit 0, closed, the input's 8 vertices and 10 faces first and unchanged.
 if "$H" mesh-fill "$T/open_box.obj" --out "$T/filled.obj" --json >"$T/r.json" \
@@ -62,6 +63,12 @@ if "$H" mesh-fill "$T/open_box.obj" --out "$T/filled.obj" --json >"$T/r.json" \
   pass=$((pass+1)); echo "ok   good fill: $(grep -o '"new_triangles":[0-9]*' "$T/r.json")"
 else
   fail=$((fail+1)); echo "FAIL good fill: $(cat "$T/r.json")"
+fi
+# Liepa's triangulation through the CLI closes the box too.
+if "$H" mesh-fill "$T/open_box.obj" --out "$T/dihedral.obj" --triangulation dihedral --json | grep -q '"closed":true'; then
+  pass=$((pass+1)); echo "ok   --triangulation dihedral"
+else
+  fail=$((fail+1)); echo "FAIL --triangulation dihedral"
 fi
 # Every format writes and reads back.
 for ext in off ply stl; do

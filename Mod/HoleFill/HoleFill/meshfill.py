@@ -65,7 +65,8 @@ def meshHoles(mesh):
 
 
 def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-1, smoothIterations=-1,
-                  densityFactor=0.0, closenessScale=0.0, featureScale=0.0, progress=None):
+                  densityFactor=0.0, closenessScale=0.0, featureScale=0.0, progress=None, shapeOrder=-1,
+                  triangulation="angle"):
     """Fill holes of `mesh`; returns (new Mesh.Mesh, report dict).
 
     holes: hole numbers (0-based, as meshHoles numbers them) or MeshHole dicts; None fills every
@@ -73,6 +74,9 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-
     of an open scan). refine=False keeps the bare minimum-angle triangulation. fairIterations,
     smoothIterations, densityFactor (α), closenessScale and featureScale (σ_c, σ_s per local
     density) override the defaults when given (≥ 0, > 0). progress(fraction) -> False cancels.
+    shapeOrder: 0 flat (the paper's placement), 1 membrane, 2 thin plate (default), 3 minimum
+    variation. triangulation: "angle" (the paper's minimum-angle ear cutting, default; better
+    across creases) or "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes).
     The report has per hole: new_vertices, new_triangles, min/max/mean_quality (Field's
     2·r_in/R_circ), share_quality_0_7, seconds, message; and closed / closed_when_welded."""
     v, t = _arrays(mesh)
@@ -81,7 +85,8 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-
         raise HoleFillApp.HoleFillError("no hole selected: pass hole numbers, or holes=None for all")
     nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, int(maxBoundary), bool(refine), int(fairIterations),
                                                int(smoothIterations), float(densityFactor), float(closenessScale),
-                                               float(featureScale), progress)
+                                               float(featureScale), progress, shapeOrder=int(shapeOrder),
+                                               triangulation=str(triangulation))
     return _mesh(nv, nt), json.loads(report)
 
 

@@ -327,3 +327,38 @@ TEST(MeshHoleFill, PlanarSliverHoleGetsBackItsTriangle) {
   EXPECT_GT(spoiled.newVertices, 0);
   EXPECT_LT(spoiled.minQuality, q);
 }
+
+TEST(MeshHoleFill, MinimumDihedralTriangulationCoversThePlanarHole) {
+  // Liepa's program on a planar concave loop: n − 2 triangles, all facing one way, covering the
+  // cut area exactly (the signed areas add up to the removed area).
+  const auto cut = planeWithPolygonHole({{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.4}, {0.4, 0.4}, {0.4, 0.6}, {0.8, 0.6}, {0.8, 0.8}, {0.2, 0.8}});
+  const MeshHoleReport holes = findMeshHoles(cut.mesh);
+  const MeshHole& hole = holes.holes[1];
+  std::vector<Eigen::Vector3d> loop, across;
+  for (size_t k = 0; k < hole.loop.size(); ++k) {
+    loop.push_back(cut.mesh.vertices.row(hole.loop[k]).transpose());
+    across.push_back(Eigen::Vector3d(0, 0, 1));
+  }
+  const auto tris = triangulateMinDihedral(loop, across, [](int, int) { return false; });
+  ASSERT_EQ(tris.size(), loop.size() - 2);
+  double area = 0;
+  for (const auto& t : tris) {
+    const double a = 0.5 * (loop[t[1]] - loop[t[0]]).cross(loop[t[2]] - loop[t[0]]).z();
+    EXPECT_GT(a, 0);  // no fold: every triangle faces +z like the plane
+    area += a;
+  }
+  double removed = 0;
+  for (Eigen::Index t = 0; t < cut.removed.triangles.rows(); ++t) {
+    const Eigen::Vector3i f = cut.removed.triangles.row(t).transpose();
+    removed += 0.5 * (cut.removed.vertices.row(f[1]) - cut.removed.vertices.row(f[0]))
+                         .cross(cut.removed.vertices.row(f[2]) - cut.removed.vertices.row(f[0])).z();
+  }
+  EXPECT_NEAR(area, removed, 1e-12);
+  // The whole pipeline with it fills validly and closed.
+  MeshFillOptions o;
+  o.holes = {1};
+  o.initial = MeshFillOptions::Triangulation::MinDihedral;
+  const MeshFillResult r = fillMeshHoles(cut.mesh, o);
+  EXPECT_EQ(r.filledHoles, 1);
+  for (Eigen::Index v = cut.mesh.vertices.rows(); v < r.mesh.vertices.rows(); ++v) EXPECT_EQ(r.mesh.vertices(v, 2), 0.0);
+}
