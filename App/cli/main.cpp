@@ -44,7 +44,7 @@ const char* kUsage =
     "                [--isophote-direction x,y,z] [--direction x,y,z] [--scale-percentile LO,HI | --scale-range LO,HI]\n"
     "                [--symmetric auto|yes|no] [--normal-angle DEG] [--edges 0|1] [--legend 0|1] [--json]\n"
     "  holefill mesh-fill MESH --out OUT [--max-boundary N] [--holes 0,3,..] [--no-refine] [--fair-iterations K]\n"
-    "                [--shape-order 0|1|2|3] [--triangulation angle|dihedral] "
+    "                [--shape-order 0|1|2|3] [--triangulation angle|dihedral|auto] "
     "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
     "  holefill mesh-holes MESH [--json]\n"
     "  holefill samples DIR        write the bundled sample models (.brep, and scan_with_holes.obj)\n"
@@ -248,7 +248,8 @@ int cmdMeshFill(const Args& a) {
   if (a.has("--shape-order")) o.shape.order = static_cast<int>(number(a.get("--shape-order"), "--shape-order"));
   const std::string triangulation = a.get("--triangulation", "angle");
   if (triangulation == "dihedral") o.initial = MeshFillOptions::Triangulation::MinDihedral;
-  else if (triangulation != "angle") throw Error("--triangulation must be angle or dihedral, got '" + triangulation + "'");
+  else if (triangulation == "auto") o.initial = MeshFillOptions::Triangulation::Auto;
+  else if (triangulation != "angle") throw Error("--triangulation must be angle, dihedral or auto, got '" + triangulation + "'");
   const MeshFillResult r = fillMeshHoles(readMesh(a.input), o);
   if (r.fills.empty()) throw Error("the mesh has no holes (it is closed); nothing written");
   const int code = r.filledHoles == 0 && r.openHoles > 0 ? 2 : (r.openHoles > 0 ? 3 : 0);

@@ -104,9 +104,30 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
           across[i] = orientedNormal(hole.edgeTriangles[i]).normalized();
         }
         patch.outsideEdge = [&](int i, int j) { return joined(loop[i], loop[j]); };
-        if (options.initial == MeshFillOptions::Triangulation::MinDihedral && n <= options.maxDihedralLoop) {
+        bool dihedral = options.initial == MeshFillOptions::Triangulation::MinDihedral;
+        if (options.initial == MeshFillOptions::Triangulation::Auto) {
+          // A crease reaching the loop: two surrounding triangles at a loop vertex, sharing an
+          // edge, whose normals differ by more than the crease angle.
+          bool crease = false;
+          for (int i = 0; i < n && !crease; ++i)
+            for (int t : incident[loop[i]])
+              for (int u : incident[loop[i]]) {
+                if (u <= t) continue;
+                int shared = 0;
+                for (int a = 0; a < 3; ++a)
+                  for (int b = 0; b < 3; ++b) shared += mesh.triangles(t, a) == mesh.triangles(u, b) ? 1 : 0;
+                const Eigen::Vector3d nt = orientedNormal(t), nu = orientedNormal(u);
+                if (shared == 2 && nt.norm() > 0 && nu.norm() > 0 &&
+                    std::atan2(nt.cross(nu).norm(), nt.dot(nu)) > options.creaseAngle)
+                  crease = true;
+              }
+          dihedral = !crease;
+        }
+        if (dihedral && n <= options.maxDihedralLoop) {
           patch.triangles = triangulateMinDihedral(patch.points, across, patch.outsideEdge);
+          fill.triangulation = "dihedral";
         } else {
+          fill.triangulation = "angle";
           const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, options.triangulation);
           patch.triangles = tri.triangles;
           fill.sigma = tri.sigma;
@@ -282,6 +303,7 @@ std::string MeshFillResult::toJson() const {
     w.field("mean_quality", f.meanQuality);
     w.field("share_quality_0_7", f.goodShare);
     w.field("sigma_deg", f.sigma * 180 / M_PI);
+    w.field("triangulation", f.triangulation);
     w.field("splits", f.splits);
     w.field("swaps", f.swaps);
     w.field("seconds", f.seconds);

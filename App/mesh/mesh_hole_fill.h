@@ -27,11 +27,13 @@ struct MeshFillOptions {
   int maxBoundary = 0;                   // holes with more boundary vertices stay open (0: no limit)
   std::vector<int> holes;                // indices into findMeshHoles(mesh).holes; empty: every fillable hole
   bool refine = true;                    // density refinement (off: the bare minimum-angle triangulation)
-  // The initial triangulation: the paper's minimum-angle ear cutting, or Liepa's minimum-
-  // dihedral dynamic program (the CGAL peer's; loops longer than maxDihedralLoop fall back to
-  // minimum angle, the program being cubic).
-  enum class Triangulation { MinAngle, MinDihedral } initial = Triangulation::MinAngle;
+  // The initial triangulation: the paper's minimum-angle ear cutting, Liepa's minimum-dihedral
+  // dynamic program (the CGAL peer's; loops longer than maxDihedralLoop fall back to minimum
+  // angle, the program being cubic), or per hole: minimum angle where a crease of the
+  // surrounding mesh (dihedral above creaseAngle) reaches the loop, minimum dihedral elsewhere.
+  enum class Triangulation { MinAngle, MinDihedral, Auto } initial = Triangulation::MinAngle;
   int maxDihedralLoop = 400;
+  double creaseAngle = 60.0 * M_PI / 180;
   int fairIterations = -1;               // −1: fairing.iterations; 0 switches fairing off
   bool keepBetterBare = true;            // a planar hole keeps its bare triangulation when that has the better
                                          // worst triangle (a removed sliver, a 3-vertex gap)
@@ -53,6 +55,7 @@ struct MeshHoleFill {
   double minQuality = 0, maxQuality = 0, meanQuality = 0;
   double goodShare = 0;                  // share of new triangles with quality ≥ 0.7
   double sigma = 0;                      // the triangulation's normal threshold (radians)
+  std::string triangulation;             // "angle" or "dihedral": the one used
   int splits = 0, swaps = 0;
   double seconds = 0;
 };

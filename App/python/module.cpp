@@ -299,7 +299,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
       if (shapePasses > 0) o.shape.passes = shapePasses;
       o.shape.alongNormals = alongNormals;
       if (triangulation == "dihedral") o.initial = MeshFillOptions::Triangulation::MinDihedral;
-      else if (triangulation != "angle") throw Error("unknown triangulation '" + triangulation + "': use angle or dihedral");
+      else if (triangulation == "auto") o.initial = MeshFillOptions::Triangulation::Auto;
+      else if (triangulation != "angle") throw Error("unknown triangulation '" + triangulation + "': use angle, dihedral or auto");
       if (progress) o.progress = [&](double f) { py::gil_scoped_acquire g; return progress(f); };
       MeshFillResult r;
       {

@@ -196,8 +196,8 @@ def main():
         HoleFillApp.writeMesh(c["v"], c["t"], os.path.join(work, "%s_in.off" % safe))
         for method, runner in (("HoleFill", run_ours),
                                ("HoleFill C2", lambda c: run_ours(c, shapeOrder=3, fairIterations=0)),
-                               ("HoleFill C2+D", lambda c: run_ours(c, shapeOrder=3, fairIterations=0,
-                                                                    triangulation="dihedral")),
+                               ("HoleFill C2 auto", lambda c: run_ours(c, shapeOrder=3, fairIterations=0,
+                                                                       triangulation="auto")),
                                ("CGAL Liepa", lambda c: run_cgal(c, work)),
                                ("FreeCAD fillupHoles", run_freecad)):
             r = runner(c)

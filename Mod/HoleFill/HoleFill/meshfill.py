@@ -76,7 +76,8 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-
     density) override the defaults when given (≥ 0, > 0). progress(fraction) -> False cancels.
     shapeOrder: 0 flat (the paper's placement), 1 membrane, 2 thin plate (default), 3 minimum
     variation. triangulation: "angle" (the paper's minimum-angle ear cutting, default; better
-    across creases) or "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes).
+    across creases), "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes)
+    or "auto" (per hole: minimum angle where a crease of the surrounding mesh reaches the hole).
     The report has per hole: new_vertices, new_triangles, min/max/mean_quality (Field's
     2·r_in/R_circ), share_quality_0_7, seconds, message; and closed / closed_when_welded."""
     v, t = _arrays(mesh)

@@ -362,3 +362,27 @@ TEST(MeshHoleFill, MinimumDihedralTriangulationCoversThePlanarHole) {
   EXPECT_EQ(r.filledHoles, 1);
   for (Eigen::Index v = cut.mesh.vertices.rows(); v < r.mesh.vertices.rows(); ++v) EXPECT_EQ(r.mesh.vertices(v, 2), 0.0);
 }
+
+TEST(MeshHoleFill, AutoTriangulationKeepsMinimumAngleAtCreases) {
+  // A plane folded by 90° along y = 0.5, with a hole across the fold: a crease reaches the
+  // loop, so auto uses the paper's minimum-angle triangulation; a hole in a sphere has no
+  // crease and gets Liepa's minimum-dihedral one.
+  TriangleMesh folded = samples::gridPlane(20, 20, 1.0 / 20);
+  for (Eigen::Index v = 0; v < folded.vertices.rows(); ++v)
+    if (folded.vertices(v, 1) > 0.5) {
+      folded.vertices(v, 2) = folded.vertices(v, 1) - 0.5;
+      folded.vertices(v, 1) = 0.5;
+    }
+  const auto crease = samples::cutHole(folded, [](const Eigen::Vector3d& c) { return (c - Eigen::Vector3d(0.5, 0.5, 0)).norm() < 0.2; });
+  MeshFillOptions o;
+  o.initial = MeshFillOptions::Triangulation::Auto;
+  o.maxBoundary = 60;
+  const MeshFillResult r = fillMeshHoles(crease.mesh, o);
+  ASSERT_EQ(r.filledHoles, 1);
+  for (const auto& f : r.fills)
+    if (f.filled) EXPECT_EQ(f.triangulation, "angle");
+  const auto cap = samples::cutHole(samples::icosphere(4), [](const Eigen::Vector3d& c) { return c.normalized().z() > 0.9; });
+  const MeshFillResult s = fillMeshHoles(cap.mesh, o);
+  ASSERT_EQ(s.filledHoles, 1);
+  EXPECT_EQ(s.fills[0].triangulation, "dihedral");
+}
