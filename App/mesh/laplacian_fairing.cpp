@@ -63,8 +63,9 @@ void fairLaplacian(HolePatch& patch, const SurroundingRing& ring, const Laplacia
 
   // Each new vertex moves only along its normal, x_i = p_i + h_i n_i: the tangential layout
   // the refinement and smoothing made (and with it the triangle quality) is kept, and a
-  // planar hole stays exactly planar. The scalar offsets h solve the least-squares problem
-  // min Σ_c |M_uu (p_c + n_c∘h) + M_uk x_k,c|² (normal equations, SPD).
+  // planar hole stays exactly planar. The offsets make the normal part of Δ^k x vanish at every
+  // new vertex: a square, unsymmetric system (LU). (The SPD energy form Σ (n·Lx)² with LDLT was
+  // tried: 25% faster on a 96k-vertex patch, but worse worst triangles on holes.off.)
   std::vector<Eigen::Vector3d> normal(np, Eigen::Vector3d::Zero());
   for (const auto& t : patch.triangles) {
     double a2;
