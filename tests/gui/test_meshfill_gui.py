@@ -93,6 +93,9 @@ def body():
     table = FreeCADGui.getMainWindow().findChild(QtWidgets.QTableWidget, "HoleFillMeshHoleTable")
     assert table is not None and table.isVisible(), "no hole table in the task panel"
     assert table.rowCount() == 2, table.rowCount()
+    shape = FreeCADGui.getMainWindow().findChild(QtWidgets.QComboBox, "HoleFillMeshFillShape")
+    assert shape is not None and shape.count() == 2 and shape.currentIndex() == 0
+    shape.setCurrentIndex(1)  # the closest-to-surface variant: the report must say which triangulation ran
     nodes = overlay_nodes()
     assert len(nodes) == 1, nodes
     colors = line_colors(nodes[0])
@@ -132,6 +135,7 @@ def body():
     rep = json.loads(filled.HoleFillReport)
     assert rep["filled"] == 1 and rep["open"] == 1, rep
     assert [f["hole"] for f in rep["hole_fills"] if f["filled"]] == [0], rep["hole_fills"]
+    assert rep["hole_fills"][0]["triangulation"] == "dihedral", rep["hole_fills"][0]  # a sphere: no crease
     assert (src.Mesh.CountPoints, src.Mesh.CountFacets, str(src.Mesh.BoundBox)) == before, "the source mesh changed"
     assert filled.Mesh.CountFacets > src.Mesh.CountFacets
     FreeCADGui.ActiveDocument.getObject(filled.Name).Visibility = True
