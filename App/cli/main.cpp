@@ -220,11 +220,7 @@ int cmdMeshHoles(const Args& a) {
   if (a.input.empty()) throw Error("mesh-holes: no input file");
   const MeshHoleReport d = findMeshHoles(readMesh(a.input));
   if (a.has("--json")) {
-    std::cout << "[";
-    for (size_t i = 0; i < d.holes.size(); ++i)
-      std::cout << (i ? "," : "") << "{\"hole\":" << i << ",\"boundary_vertices\":" << d.holes[i].loop.size()
-                << ",\"length\":" << d.holes[i].length << ",\"fillable\":" << (d.holes[i].fillable ? "true" : "false") << "}";
-    std::cout << "]\n";
+    std::cout << toJson(d) << "\n";
     return 0;
   }
   std::printf("%-5s %-8s %-12s %s\n", "hole", "vertices", "length", "note");

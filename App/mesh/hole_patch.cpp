@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "geometry/error.h"
+#include "mesh/triangle_mesh.h"
 
 namespace holefill {
 
@@ -37,6 +38,19 @@ void PatchEdges::remove(const std::array<int, 3>& tri, int t) {
 const EdgeTriangles* PatchEdges::find(int u, int v) const {
   auto it = map_.find(key(u, v));
   return it == map_.end() ? nullptr : &it->second;
+}
+
+double worstQuality(const HolePatch& patch) {
+  double q = 1;
+  for (const auto& t : patch.triangles)
+    q = std::min(q, triangleQuality(patch.points[t[0]], patch.points[t[1]], patch.points[t[2]]));
+  return q;
+}
+
+double meanQuality(const HolePatch& patch) {
+  double q = 0;
+  for (const auto& t : patch.triangles) q += triangleQuality(patch.points[t[0]], patch.points[t[1]], patch.points[t[2]]);
+  return patch.triangles.empty() ? 0 : q / static_cast<double>(patch.triangles.size());
 }
 
 Eigen::Vector3d patchTriangleNormal(const HolePatch& patch, const std::array<int, 3>& tri, double* area2) {

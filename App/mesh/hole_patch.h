@@ -54,6 +54,10 @@ private:
   std::unordered_map<std::uint64_t, EdgeTriangles> map_;
 };
 
+// Field's quality of the patch's worst triangle and the mean over its triangles.
+double worstQuality(const HolePatch& patch);
+double meanQuality(const HolePatch& patch);
+
 // Unit normal of a patch triangle (zero when degenerate), unnormalized cross product in `area2`.
 Eigen::Vector3d patchTriangleNormal(const HolePatch& patch, const std::array<int, 3>& tri, double* area2 = nullptr);
 

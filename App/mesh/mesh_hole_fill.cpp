@@ -118,7 +118,7 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
                   for (int b = 0; b < 3; ++b) shared += mesh.triangles(t, a) == mesh.triangles(u, b) ? 1 : 0;
                 const Eigen::Vector3d nt = orientedNormal(t), nu = orientedNormal(u);
                 if (shared == 2 && nt.norm() > 0 && nu.norm() > 0 &&
-                    std::atan2(nt.cross(nu).norm(), nt.dot(nu)) > options.creaseAngle)
+                    angleBetween(nt, nu) > options.creaseAngle)
                   crease = true;
               }
           dihedral = !crease;
@@ -132,8 +132,9 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
           patch.triangles = tri.triangles;
           fill.sigma = tri.sigma;
         }
-        HolePatch bare = patch;  // the relaxed minimum-angle triangulation, kept for tiny holes (below)
-        {
+        HolePatch bare;  // the relaxed initial triangulation, for the planar-hole fallback below
+        if (options.keepBetterBare) {
+          bare = patch;
           PatchEdges edges(bare);
           relaxAllEdges(bare, edges, options.refinement);
         }
@@ -189,12 +190,7 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
         // A planar hole whose bare triangulation already has the better worst triangle (a
         // removed sliver, a 3-vertex gap) is kept bare: new vertices cannot improve its shape,
         // which the bare triangles carry exactly, and here they only spoil its worst triangle.
-        auto worstOf = [](const HolePatch& p) {
-          double q = 1;
-          for (const auto& t : p.triangles) q = std::min(q, triangleQuality(p.points[t[0]], p.points[t[1]], p.points[t[2]]));
-          return q;
-        };
-        if (options.keepBetterBare && worstOf(bare) > worstOf(patch)) {
+        if (options.keepBetterBare && worstQuality(bare) > worstQuality(patch)) {
           Eigen::MatrixX3d P(n, 3);
           for (int i = 0; i < n; ++i) P.row(i) = bare.points[i].transpose();
           const Eigen::RowVector3d c = P.colwise().mean();

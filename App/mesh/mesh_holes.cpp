@@ -6,6 +6,7 @@
 #include <queue>
 #include <unordered_map>
 
+#include "geometry/json_writer.h"
 #include "mesh/mesh_topology.h"
 
 namespace holefill {
@@ -79,7 +80,6 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
   report.inconsistentEdges = topo.inconsistentEdges;
   report.components = topo.components;
   report.unusedVertices = topo.unusedVertices;
-  report.flipped = topo.flipped;
   if (topo.nonOrientableComponents > 0)
     report.warnings.push_back(std::to_string(topo.nonOrientableComponents) +
                               " component(s) cannot be oriented consistently; their holes are left unfilled");
@@ -190,6 +190,24 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
   std::stable_sort(report.holes.begin(), report.holes.end(),
                    [](const MeshHole& a, const MeshHole& b) { return a.length > b.length; });
   return report;
+}
+
+std::string toJson(const MeshHoleReport& d) {
+  JsonWriter w;
+  w.beginObject().key("holes").beginArray();
+  for (size_t i = 0; i < d.holes.size(); ++i) {
+    const MeshHole& h = d.holes[i];
+    w.beginObject().field("hole", static_cast<int>(i)).field("boundary_vertices", static_cast<int>(h.loop.size()));
+    w.field("length", h.length).field("fillable", h.fillable).field("anticlockwise", h.anticlockwise);
+    w.field("message", h.message).field("loop", h.loop);
+    w.endObject();
+  }
+  w.endArray();
+  w.field("boundary_edges", d.boundaryEdges).field("non_manifold_edges", d.nonManifoldEdges);
+  w.field("inconsistent_edges", d.inconsistentEdges).field("singular_vertices", d.singularVertices);
+  w.field("components", d.components).field("duplicate_vertex_splits", d.duplicateSplits).field("warnings", d.warnings);
+  w.endObject();
+  return w.str();
 }
 
 }  // namespace holefill

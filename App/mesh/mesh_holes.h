@@ -43,11 +43,12 @@ struct MeshHoleReport {
   int components = 0;                    // edge-connected components of triangles
   int unusedVertices = 0;                // vertices of no triangle
   int duplicateSplits = 0;               // loops split where they pass two coincident vertices
-  // Per triangle: true when the tracer reads it reversed to make its component consistently
-  // oriented (majority orientation kept). The filler orients new triangles the same way.
-  std::vector<bool> flipped;
   std::vector<std::string> warnings;
 };
+
+// The report as JSON (holes longest first with their loops, topology counts, warnings); the
+// CLI prints it and the Python module hands it to json.loads.
+std::string toJson(const MeshHoleReport& report);
 
 // Validates the mesh (holefill::Error for NaN, bad indices, repeated vertices in a triangle),
 // then finds every boundary loop. Vertices closer than coincidence·(bounding-box diagonal)

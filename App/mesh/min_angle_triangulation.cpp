@@ -5,14 +5,9 @@
 #include <set>
 
 #include "geometry/error.h"
+#include "mesh/triangle_mesh.h"
 
 namespace holefill {
-
-namespace {
-double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
-}  // namespace
 
 MinAngleResult triangulateMinAngle(const std::vector<Eigen::Vector3d>& loop,
                                    const std::vector<Eigen::Vector3d>& normalSums,

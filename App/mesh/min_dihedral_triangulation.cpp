@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "geometry/error.h"
+#include "mesh/triangle_mesh.h"
 
 namespace holefill {
 
@@ -15,10 +16,6 @@ struct Weight {
 };
 
 const Weight kInfinite{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-
-double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
 
 }  // namespace
 

@@ -33,18 +33,6 @@ void splitEdge(HolePatch& patch, PatchEdges& edges, int u, int v) {
   }
 }
 
-double worst(const HolePatch& patch) {
-  double q = 1;
-  for (const auto& t : patch.triangles) q = std::min(q, quality(patch, t));
-  return q;
-}
-
-double mean(const HolePatch& patch) {
-  double q = 0;
-  for (const auto& t : patch.triangles) q += quality(patch, t);
-  return patch.triangles.empty() ? 0 : q / static_cast<double>(patch.triangles.size());
-}
-
 }  // namespace
 
 QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& options, const RefinementOptions& relax) {
@@ -55,7 +43,7 @@ QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& option
   // the worst one: where the hole's loop folds strongly, smoothing cannot place the new
   // midpoints and a round makes things worse; it is undone and the rounds stop.
   result.swaps += smoothTangentially(patch, options.smoothing, relax).swaps;
-  double bestMin = worst(patch), bestMean = mean(patch);
+  double bestMin = worstQuality(patch), bestMean = meanQuality(patch);
   auto better = [&](double lo, double avg) { return lo > bestMin || (avg > bestMean && lo >= bestMin - 0.02); };
   for (; result.rounds < options.rounds; ++result.rounds) {
     const std::vector<Eigen::Vector3d> keptPoints = patch.points;
@@ -98,7 +86,7 @@ QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& option
     TangentialSmoothingOptions settle = options.smoothing;
     settle.iterations = std::min(settle.iterations, options.roundSweeps);
     const int swaps = relaxAllEdges(patch, edges, relax) + smoothTangentially(patch, settle, relax).swaps;
-    const double lo = worst(patch), avg = mean(patch);
+    const double lo = worstQuality(patch), avg = meanQuality(patch);
     if (!better(lo, avg)) {
       patch.points = keptPoints;
       patch.triangles = keptTriangles;
@@ -110,7 +98,7 @@ QualityResult improvePatchQuality(HolePatch& patch, const QualityOptions& option
     result.splits += splits;
     result.swaps += swaps;
   }
-  result.minQuality = worst(patch);
+  result.minQuality = worstQuality(patch);
   return result;
 }
 

@@ -34,13 +34,13 @@ double triangleQuality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const
   return std::max(0.0, 8.0 * (s - la) * (s - lb) * (s - lc) / prod);
 }
 
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
 double maxInnerAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   auto angle = [](const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r) {
     const Eigen::Vector3d u = q - p, v = r - p;
-    const double nu = u.norm(), nv = v.norm();
-    if (!(nu > 0 && nv > 0)) return M_PI;
-    // atan2 keeps full accuracy near 0 and π where acos of the dot product does not.
-    return std::atan2(u.cross(v).norm(), u.dot(v));
+    if (!(u.norm() > 0 && v.norm() > 0)) return M_PI;
+    return angleBetween(u, v);
   };
   return std::max({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
 }

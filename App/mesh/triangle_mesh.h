@@ -25,6 +25,10 @@ void validateMesh(const TriangleMesh& mesh, const std::string& what = "mesh");
 // Field's quality 2·r_in/R_circ = 4·(s−a)(s−b)(s−c)/(abc) with s the half perimeter.
 double triangleQuality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+// Angle in [0, π] between two vectors; atan2 keeps full accuracy near 0 and π where acos of
+// the dot product does not. 0 when either vector is zero.
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 // Largest inner angle (radians) of a triangle; π for a degenerate one.
 double maxInnerAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 

@@ -264,22 +264,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
      "Like continuityReport, with the samples: (JSON, samples k x 6, edge per sample).");
   m.def("meshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles) {
-    return guarded([&] {
-      const MeshHoleReport d = findMeshHoles(TriangleMesh{vertices, triangles});
-      JsonWriter w;
-      w.beginObject().key("holes").beginArray();
-      for (const MeshHole& h : d.holes) {
-        w.beginObject().field("boundary_vertices", static_cast<int>(h.loop.size())).field("length", h.length);
-        w.field("fillable", h.fillable).field("anticlockwise", h.anticlockwise).field("message", h.message).field("loop", h.loop);
-        w.endObject();
-      }
-      w.endArray();
-      w.field("boundary_edges", d.boundaryEdges).field("non_manifold_edges", d.nonManifoldEdges);
-      w.field("inconsistent_edges", d.inconsistentEdges).field("singular_vertices", d.singularVertices);
-      w.field("components", d.components).field("duplicate_vertex_splits", d.duplicateSplits).field("warnings", d.warnings);
-      w.endObject();
-      return w.str();
-    });
+    return guarded([&] { return toJson(findMeshHoles(TriangleMesh{vertices, triangles})); });
   }, py::arg("vertices"), py::arg("triangles"), "Boundary loops of a triangle mesh (JSON: holes longest first, topology counts).");
   m.def("fillMeshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<int>& holes,
                             int maxBoundary, bool refine, int fairIterations, int smoothIterations, double densityFactor,
