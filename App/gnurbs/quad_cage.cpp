@@ -1,0 +1,106 @@
+#include "gnurbs/quad_cage.h"
+
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "geometry/error.h"
+
+namespace holefill {
+
+double QuadCage::knot(int a, int b) const {
+  const auto it = knots.find(edgeKey(a, b));
+  return it == knots.end() ? 1.0 : it->second;
+}
+
+CageTopology::CageTopology(const QuadCage& cage) {
+  const int nv = static_cast<int>(cage.vertices.rows()), nf = static_cast<int>(cage.quads.rows());
+  if (nf == 0) throw Error("the cage has no quads");
+  if (!cage.vertices.allFinite()) throw Error("the cage has a vertex with a non-finite coordinate");
+  auto name = [](int f) { return "quad " + std::to_string(f); };
+  std::unordered_map<std::uint64_t, int> directed;  // (from << 32 | to) → 4*face+edge
+  for (int f = 0; f < nf; ++f) {
+    for (int k = 0; k < 4; ++k) {
+      const int v = cage.quads(f, k);
+      if (v < 0 || v >= nv) throw Error(name(f) + " refers to vertex " + std::to_string(v) + ", which does not exist");
+      for (int m = 0; m < k; ++m)
+        if (cage.quads(f, m) == v) throw Error(name(f) + " repeats vertex " + std::to_string(v));
+    }
+    for (int k = 0; k < 4; ++k) {
+      const auto from = static_cast<std::uint64_t>(cage.quads(f, k)), to = static_cast<std::uint64_t>(cage.quads(f, (k + 1) % 4));
+      if (!directed.emplace((from << 32) | to, 4 * f + k).second)
+        throw Error("edge " + std::to_string(from) + "-" + std::to_string(to) + " is used twice in the same direction (" +
+                    name(f) + "): the cage is non-manifold or not consistently oriented");
+    }
+  }
+  across_.assign(4 * nf, -1);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 4; ++k) {
+      const auto from = static_cast<std::uint64_t>(cage.quads(f, k)), to = static_cast<std::uint64_t>(cage.quads(f, (k + 1) % 4));
+      const auto it = directed.find((to << 32) | from);
+      if (it != directed.end()) across_[4 * f + k] = it->second;
+    }
+  auto isEdge = [&](std::uint64_t key) {
+    const auto a = key & 0xffffffffu, b = key >> 32;
+    return directed.count((a << 32) | b) > 0 || directed.count((b << 32) | a) > 0;
+  };
+  for (const auto& [key, d] : cage.knots) {
+    if (!isEdge(key)) throw Error("a knot interval is given for " + std::to_string(key & 0xffffffffu) + "-" + std::to_string(key >> 32) + ", which is not a cage edge");
+    if (!(d > 0) || !std::isfinite(d)) throw Error("knot intervals must be positive and finite; edge " + std::to_string(key & 0xffffffffu) + "-" + std::to_string(key >> 32) + " has " + std::to_string(d));
+  }
+  for (std::uint64_t key : cage.sharp)
+    if (!isEdge(key)) throw Error("sharp edge " + std::to_string(key & 0xffffffffu) + "-" + std::to_string(key >> 32) + " is not a cage edge");
+
+  // Rotation about a vertex: the face across a corner's incoming edge holds the next corner.
+  std::vector<Corner> cornerOf(nv, Corner{-1, -1});
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 4; ++k) cornerOf[cage.quads(f, k)] = {f, k};
+  around_.assign(nv, {});
+  spokes_.assign(nv, {});
+  boundary_.assign(nv, false);
+  for (int v = 0; v < nv; ++v) {
+    if (cornerOf[v].face < 0) continue;  // unused vertex: no face, no spokes
+    // Turn backwards (across the outgoing edge) until the boundary or back at the start.
+    Corner start = cornerOf[v];
+    for (int steps = 0; steps <= nf; ++steps) {
+      const int a = across_[4 * start.face + start.corner];  // across the outgoing edge (v → next)
+      if (a < 0) { boundary_[v] = true; break; }
+      const Corner prev{a / 4, (a % 4 + 1) % 4};           // that face's corner at v
+      if (prev.face == cornerOf[v].face) break;
+      start = prev;
+    }
+    Corner c = start;
+    for (int steps = 0; steps <= nf; ++steps) {
+      around_[v].push_back(c);
+      spokes_[v].push_back(cage.quads(c.face, (c.corner + 1) % 4));
+      const int in = (c.corner + 3) % 4;                      // incoming edge (prev → v)
+      const int a = across_[4 * c.face + in];
+      if (a < 0) { spokes_[v].push_back(cage.quads(c.face, in)); break; }
+      c = Corner{a / 4, a % 4};                               // across face's outgoing edge at v
+      if (c.face == start.face && c.corner == start.corner) break;
+    }
+    if (boundary_[v] && spokes_[v].size() != around_[v].size() + 1)
+      throw Error("vertex " + std::to_string(v) + " is non-manifold (its faces do not form one fan)");
+  }
+  // Every corner of a vertex must be in its one fan: otherwise two fans meet at the vertex.
+  std::vector<int> seen(nv, 0);
+  for (int v = 0; v < nv; ++v) seen[v] = static_cast<int>(around_[v].size());
+  std::vector<int> uses(nv, 0);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 4; ++k) ++uses[cage.quads(f, k)];
+  for (int v = 0; v < nv; ++v)
+    if (uses[v] != seen[v]) throw Error("vertex " + std::to_string(v) + " is non-manifold (two fans of quads meet there)");
+  for (const auto& [v, a] : cage.anchors) {
+    if (v < 0 || v >= nv) throw Error("an anchor is given for vertex " + std::to_string(v) + ", which does not exist");
+    if (!a.allFinite()) throw Error("the anchor of vertex " + std::to_string(v) + " is not finite");
+  }
+}
+
+std::vector<int> CageTopology::extraordinaryPoints() const {
+  std::vector<int> eps;
+  for (int v = 0; v < vertexCount(); ++v)
+    if (isExtraordinary(v)) eps.push_back(v);
+  return eps;
+}
+
+}  // namespace holefill
