@@ -79,17 +79,13 @@ CageTopology::CageTopology(const QuadCage& cage) {
       c = Corner{a / 4, a % 4};                               // across face's outgoing edge at v
       if (c.face == start.face && c.corner == start.corner) break;
     }
-    if (boundary_[v] && spokes_[v].size() != around_[v].size() + 1)
-      throw Error("vertex " + std::to_string(v) + " is non-manifold (its faces do not form one fan)");
   }
   // Every corner of a vertex must be in its one fan: otherwise two fans meet at the vertex.
-  std::vector<int> seen(nv, 0);
-  for (int v = 0; v < nv; ++v) seen[v] = static_cast<int>(around_[v].size());
-  std::vector<int> uses(nv, 0);
+  std::vector<size_t> uses(nv, 0);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 4; ++k) ++uses[cage.quads(f, k)];
   for (int v = 0; v < nv; ++v)
-    if (uses[v] != seen[v]) throw Error("vertex " + std::to_string(v) + " is non-manifold (two fans of quads meet there)");
+    if (uses[v] != around_[v].size()) throw Error("vertex " + std::to_string(v) + " is non-manifold (two fans of quads meet there)");
   for (const auto& [v, a] : cage.anchors) {
     if (v < 0 || v >= nv) throw Error("an anchor is given for vertex " + std::to_string(v) + ", which does not exist");
     if (!a.allFinite()) throw Error("the anchor of vertex " + std::to_string(v) + " is not finite");

@@ -13,6 +13,8 @@
 #include <set>
 #include <vector>
 
+#include "geometry/edge_key.h"
+
 namespace holefill {
 
 struct QuadCage {
@@ -22,10 +24,7 @@ struct QuadCage {
   std::set<std::uint64_t> sharp;                 // edgeKey of C0 crease edges
   std::map<int, Eigen::Vector3d> anchors;        // sharp EP vertex → its anchor A_EP
 
-  static std::uint64_t edgeKey(int a, int b) {
-    const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
-    return (hi << 32) | lo;
-  }
+  static std::uint64_t edgeKey(int a, int b) { return undirectedEdgeKey(a, b); }
   double knot(int a, int b) const;
   bool isSharp(int a, int b) const { return sharp.count(edgeKey(a, b)) > 0; }
   void setKnot(int a, int b, double d) { knots[edgeKey(a, b)] = d; }

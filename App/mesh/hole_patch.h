@@ -12,6 +12,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "geometry/edge_key.h"
+
 namespace holefill {
 
 struct HolePatch {
@@ -41,10 +43,7 @@ struct EdgeTriangles {
 class PatchEdges {
 public:
   explicit PatchEdges(const HolePatch& patch);
-  static std::uint64_t key(int u, int v) {
-    const auto lo = static_cast<std::uint64_t>(std::min(u, v)), hi = static_cast<std::uint64_t>(std::max(u, v));
-    return (hi << 32) | lo;
-  }
+  static std::uint64_t key(int u, int v) { return undirectedEdgeKey(u, v); }
   void add(const std::array<int, 3>& tri, int t);
   void remove(const std::array<int, 3>& tri, int t);
   const EdgeTriangles* find(int u, int v) const;

@@ -1,5 +1,7 @@
 #include "mesh/triangle_mesh.h"
 
+#include "geometry/edge_key.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -86,8 +88,7 @@ int countBoundaryEdges(const TriangleMesh& mesh, const std::vector<int>& weld) {
       int u = mesh.triangles(t, k), v = mesh.triangles(t, (k + 1) % 3);
       if (!weld.empty()) { u = weld[u]; v = weld[v]; }
       if (u == v) continue;
-      const auto lo = static_cast<std::uint64_t>(std::min(u, v)), hi = static_cast<std::uint64_t>(std::max(u, v));
-      keys.push_back((hi << 32) | lo);
+      keys.push_back(undirectedEdgeKey(u, v));
     }
   std::sort(keys.begin(), keys.end());
   int boundary = 0;
