@@ -16,9 +16,7 @@ struct Extractor {
 
   int corner(int f, int k) const { return cage.quads(f, ((k % 4) + 4) % 4); }
   Eigen::Vector3d point(int v) const { return cage.vertices.row(v).transpose(); }
-  bool feature(int f, int k) const {
-    return topo.acrossFace(f, k) < 0 || cage.isSharp(corner(f, k), corner(f, k + 1));
-  }
+  bool feature(int f, int k) const { return isFeatureEdge(corner(f, k), corner(f, k + 1)); }
 
   // Knot intervals of the edges at A and at B, perpendicular to edge k = (A, B) of f, on the far
   // side of it: in the face across, or in f mirrored across a feature line.
