@@ -1,0 +1,330 @@
+#include "gnurbs/g2_gnurbs.h"
+
+#include <algorithm>
+#include <map>
+#include <functional>
+#include <numeric>
+#include <set>
+
+#include "fill/fairness_energy.h"
+#include "geometry/bezier_patch.h"
+#include "geometry/error.h"
+#include "gnurbs/bezier_extraction.h"
+#include "gnurbs/spoke_conditions.h"
+
+namespace holefill {
+
+namespace {
+
+constexpr int kGrid = 11;              // coefficients per side of a face's 2×2 biquintic grid
+constexpr int kFacePoints = kGrid * kGrid;
+
+// Grid position (a along u, b along v) of each face corner.
+constexpr int kCornerA[4] = {0, 10, 10, 0}, kCornerB[4] = {0, 0, 10, 10};
+
+// Grid index of the point m steps from corner p towards adjacent corner q and n steps towards
+// p's other neighbour.
+int gridIndex(int p, int q, int m, int n) {
+  const int r = (q == (p + 1) % 4) ? (p + 3) % 4 : (p + 1) % 4;
+  const int a = kCornerA[p] + m * (kCornerA[q] - kCornerA[p]) / 10 + n * (kCornerA[r] - kCornerA[p]) / 10;
+  const int b = kCornerB[p] + m * (kCornerB[q] - kCornerB[p]) / 10 + n * (kCornerB[r] - kCornerB[p]) / 10;
+  return a * kGrid + b;
+}
+
+int cornerOf(const QuadCage& cage, int f, int v) {
+  for (int k = 0; k < 4; ++k)
+    if (cage.quads(f, k) == v) return k;
+  return -1;
+}
+
+// The guidance patch of an irregular face as its 11×11 grid: elevated to degree 5 and split at ½.
+Eigen::MatrixX3d elevatedGrid(const BSplineSurface& bicubic) {
+  const auto subs = splitBezier(elevateBezier(bicubic, 5, 5));
+  Eigen::MatrixX3d g(kFacePoints, 3);
+  for (int sub = 0; sub < 4; ++sub)
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        g.row((5 * (sub & 1) + i) * kGrid + 5 * (sub >> 1) + j) = subs[sub].poles.row(i * 6 + j);
+  return g;
+}
+
+BSplineSurface subPatch(const Eigen::MatrixX3d& grid, int sub) {
+  Eigen::MatrixX3d poles(36, 3);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) poles.row(i * 6 + j) = grid.row((5 * (sub & 1) + i) * kGrid + 5 * (sub >> 1) + j);
+  return bezierPatch(5, 5, poles);
+}
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+// Thin-plate energy of one 2×2 biquintic face over its grid (index a*11 + b).
+const Eigen::MatrixXd& thinPlateOfFace() {
+  static const Eigen::MatrixXd E = [] {
+    const std::vector<double> knots = {0, 0, 0, 0, 0, 0, 0.5, 0.5, 0.5, 0.5, 0.5, 1, 1, 1, 1, 1, 1};
+    return Eigen::MatrixXd(fairnessMatrix(5, knots, 5, knots, FairnessWeights{1.0, 0.0}));
+  }();
+  return E;
+}
+
+// One EP, or two joined by an edge, with its 1-ring faces: grids, variables, constraints and steps.
+struct ClusterSolve {
+  const QuadCage& cage;
+  const CageTopology& topo;
+  const GuidanceSurface& guidance;
+  const G2GnurbsOptions& options;
+  std::vector<int> eps, faces;
+  std::map<int, int> localFace;
+  Eigen::MatrixX3d guide;  // per local face, 121 rows
+
+  int gid(int lf, int index) const { return lf * kFacePoints + index; }
+  bool isClusterEP(int v) const { return std::find(eps.begin(), eps.end(), v) != eps.end(); }
+
+  // Face-local ids of a spoke's rows: m along the spoke from v, n into face f.
+  std::function<int(int, int)> spokeRows(int f, int v, int w) const {
+    const int lf = localFace.at(f), p = cornerOf(cage, f, v), q = cornerOf(cage, f, w);
+    return [this, lf, p, q](int m, int n) { return gid(lf, gridIndex(p, q, m, n)); };
+  }
+
+  void solve(std::vector<Eigen::MatrixX3d>& finalGrids, G2GnurbsResult& result) {
+    const int nl = static_cast<int>(faces.size());
+    guide.resize(nl * kFacePoints, 3);
+    for (int lf = 0; lf < nl; ++lf) guide.middleRows(lf * kFacePoints, kFacePoints) = elevatedGrid(guidance.patches[faces[lf]]);
+
+    // Spokes: merge the shared boundary rows and collect the G² conditions (once per edge).
+    UnionFind uf(nl * kFacePoints);
+    std::vector<GridCondition> conditions;
+    std::set<std::uint64_t> done;
+    for (int v : eps) {
+      const auto& fan = topo.facesAround(v);
+      const auto& sp = topo.spokes(v);
+      const int n = static_cast<int>(sp.size());
+      for (int i = 0; i < n; ++i) {
+        const int w = sp[i], fa = fan[i].face, fb = fan[(i + n - 1) % n].face;
+        const auto A = spokeRows(fa, v, w), B = spokeRows(fb, v, w);
+        for (int m = 0; m < kGrid; ++m) uf.join(A(m, 0), B(m, 0));
+        if (!done.insert(QuadCage::edgeKey(v, w)).second) continue;
+        SpokeConnection k;
+        k.dS = cage.knot(v, w);
+        k.dA = cage.knot(v, sp[(i + 1) % n]);
+        k.dB = cage.knot(v, sp[(i + n - 1) % n]);
+        k.b0 = eigenPolyhedronB(n);
+        k.r = options.rho;
+        if (isClusterEP(w)) {
+          k.epAtBothEnds = true;
+          k.b1 = eigenPolyhedronB(topo.valence(w));
+          if (n == 3) k.r = valence3Rho(k.b0, -(k.b0 + k.b1) / 2);
+          else if (topo.valence(w) == 3) k.r = valence3Rho(k.b1, -(k.b0 + k.b1) / 2);
+        } else if (n == 3) {
+          k.r = valence3Rho(k.b0, -3 * k.b0);
+        }
+        appendSpokeConditions(k, A, B, conditions);
+      }
+    }
+    // C² between each face's sub-patches, across u = ½ and v = ½.
+    for (int lf = 0; lf < nl; ++lf)
+      for (int line = 0; line < kGrid; ++line)
+        for (int dir = 0; dir < 2; ++dir) {
+          auto at = [&](int k) { return gid(lf, dir == 0 ? k * kGrid + line : line * kGrid + k); };
+          conditions.push_back({{{at(3), 1}, {at(4), -2}, {at(6), 2}, {at(7), -1}}});
+          conditions.push_back({{{at(4), 1}, {at(5), -2}, {at(6), 1}}});
+        }
+
+    // Gray points (3 rows along each non-spoke edge) are fixed; step classes of the others.
+    std::vector<int> step(nl * kFacePoints, 3);
+    std::vector<bool> fixed(nl * kFacePoints, false);
+    for (int lf = 0; lf < nl; ++lf) {
+      const int f = faces[lf];
+      for (int k = 0; k < 4; ++k) {
+        const int p = cage.quads(f, k), q = cage.quads(f, (k + 1) % 4);
+        if (isClusterEP(p) || isClusterEP(q)) continue;
+        for (int m = 0; m < kGrid; ++m)
+          for (int n = 0; n < 3; ++n) fixed[gid(lf, gridIndex(k, (k + 1) % 4, m, n))] = true;
+      }
+      for (int p = 0; p < 4; ++p) {
+        if (!isClusterEP(cage.quads(f, p))) continue;
+        for (int q : {(p + 1) % 4, (p + 3) % 4})
+          for (int m = 0; m < kGrid; ++m)
+            for (int n = 0; n < 3; ++n) {
+              const int s = (m <= 5 && (n <= 1 || m <= 2)) ? 0 : (m <= 5 ? 2 : (m <= 7 ? 1 : 3));
+              int& cur = step[gid(lf, gridIndex(p, q, m, n))];
+              cur = std::min(cur, s);
+            }
+      }
+    }
+    // Variables: one per merged class that has no fixed member.
+    std::vector<int> var(nl * kFacePoints, -1);
+    std::map<int, int> classStep;
+    std::map<int, bool> classFixed;
+    for (int g = 0; g < nl * kFacePoints; ++g) {
+      const int root = uf.find(g);
+      auto [it, fresh] = classStep.emplace(root, step[g]);
+      if (!fresh) it->second = std::min(it->second, step[g]);
+      classFixed[root] = classFixed[root] || fixed[g];
+    }
+    int nv = 0;
+    std::map<int, int> rootVar;
+    std::vector<std::vector<int>> steps(4);
+    for (const auto& [root, s] : classStep)
+      if (!classFixed[root]) {
+        rootVar[root] = nv;
+        steps[s].push_back(nv++);
+      }
+    for (int g = 0; g < nl * kFacePoints; ++g) {
+      const auto it = rootVar.find(uf.find(g));
+      var[g] = it == rootVar.end() ? -1 : it->second;
+    }
+    // A fixed class takes the guidance value of a fixed member (all of them agree: C0 guidance).
+    std::vector<int> fixedSource(nl * kFacePoints, -1);
+    for (int g = 0; g < nl * kFacePoints; ++g)
+      if (fixed[g]) fixedSource[uf.find(g)] = g;
+    auto fixedValue = [&](int g) { return Eigen::RowVector3d(guide.row(fixedSource[uf.find(g)])); };
+
+    StepwiseProblem prob;
+    prob.M = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(conditions.size()), nv);
+    prob.c = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(conditions.size()), 3);
+    for (size_t r = 0; r < conditions.size(); ++r)
+      for (const auto& [g, w] : conditions[r].terms) {
+        if (var[g] >= 0) prob.M(r, var[g]) += w;
+        else prob.c.row(r) -= w * fixedValue(g);
+      }
+    prob.steps = steps;
+    prob.H.assign(4, Eigen::MatrixXd::Zero(nv, nv));
+    prob.g.assign(4, Eigen::MatrixXd::Zero(nv, 3));
+    // ½‖Σ c_k y_k − target‖² into a step's objective; fixed y_k move to the target.
+    auto addTerm = [&](int s, const std::vector<std::pair<int, double>>& terms, Eigen::RowVector3d target) {
+      for (const auto& [g, w] : terms)
+        if (var[g] < 0) target -= w * fixedValue(g);
+      for (const auto& [gi, wi] : terms) {
+        if (var[gi] < 0) continue;
+        prob.g[s].row(var[gi]) += wi * target;
+        for (const auto& [gj, wj] : terms)
+          if (var[gj] >= 0) prob.H[s](var[gi], var[gj]) += wi * wj;
+      }
+    };
+    auto stepOfGid = [&](int g) { return var[g] < 0 ? -1 : classStep[uf.find(g)]; };
+    for (int lf = 0; lf < nl; ++lf)
+      for (int a = 0; a < kGrid; ++a)
+        for (int b = 0; b < kGrid; ++b) {
+          const int g = gid(lf, a * kGrid + b), s = stepOfGid(g);
+          if (s < 0 || s == 3) continue;
+          addTerm(s, {{g, 1.0}}, guide.row(g));  // eq. (21): values …
+          for (const int h : {a + 1 < kGrid ? gid(lf, (a + 1) * kGrid + b) : -1, b + 1 < kGrid ? gid(lf, a * kGrid + b + 1) : -1,
+                              a > 0 ? gid(lf, (a - 1) * kGrid + b) : -1, b > 0 ? gid(lf, a * kGrid + b - 1) : -1}) {
+            // … and differences to grid neighbours that are fixed or solved no later.
+            if (h < 0 || stepOfGid(h) > s || (stepOfGid(h) == s && h < g)) continue;
+            addTerm(s, {{g, 1.0}, {h, -1.0}}, guide.row(g) - guide.row(h));
+          }
+        }
+    const Eigen::MatrixXd& E = thinPlateOfFace();
+    for (int lf = 0; lf < nl; ++lf)
+      for (int i = 0; i < kFacePoints; ++i) {
+        const int gi = gid(lf, i);
+        if (var[gi] < 0) continue;
+        for (int j = 0; j < kFacePoints; ++j) {
+          const int gj = gid(lf, j);
+          if (var[gj] >= 0) prob.H[3](var[gi], var[gj]) += E(i, j);
+          else prob.g[3].row(var[gi]) -= E(i, j) * fixedValue(gj);
+        }
+      }
+
+    const StepwiseResult sol = solveStepwise(prob, options.solver);
+    result.constraintResidual = std::max(result.constraintResidual, sol.constraintResidual);
+    result.infeasibility = std::max(result.infeasibility, sol.stepInfeasibility);
+    for (int lf = 0; lf < nl; ++lf) {
+      Eigen::MatrixX3d& out = finalGrids[faces[lf]];
+      out.resize(kFacePoints, 3);
+      for (int i = 0; i < kFacePoints; ++i) {
+        const int g = gid(lf, i);
+        out.row(i) = var[g] >= 0 ? Eigen::RowVector3d(sol.x.row(var[g])) : fixedValue(g);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& options) {
+  const CageTopology topo(cage);
+  const GuidanceSurface guidance = extractGuidanceSurface(cage, topo);
+  G2GnurbsResult result;
+  result.extraordinaryPoints = topo.extraordinaryPoints();
+  const auto& eps = result.extraordinaryPoints;
+  const int nf = topo.faceCount();
+  std::vector<bool> isEP(topo.vertexCount(), false);
+  for (int v : eps) isEP[v] = true;
+
+  for (int v : eps)
+    for (int w : topo.spokes(v))
+      if (cage.isSharp(v, w))
+        throw Error("sharp edge " + std::to_string(v) + "-" + std::to_string(w) + " ends at extraordinary point " + std::to_string(v) +
+                    "; sharp edges at EPs are not supported by the G² construction yet");
+  // Clusters: EPs joined by cage edges; at most two, and EPs on one face must share an edge.
+  UnionFind uf(topo.vertexCount());
+  for (int v : eps)
+    for (int w : topo.spokes(v))
+      if (isEP[w]) uf.join(v, w);
+  std::map<int, std::vector<int>> clusterEPs;
+  for (int v : eps) clusterEPs[uf.find(v)].push_back(v);
+  for (const auto& [root, members] : clusterEPs)
+    if (members.size() > 2)
+      throw Error("extraordinary points " + std::to_string(members[0]) + ", " + std::to_string(members[1]) + " and " +
+                  std::to_string(members[2]) + " form a chain joined by edges; refine the cage (one Catmull-Clark step) first");
+  std::vector<int> faceCluster(nf, -1);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 4; ++k) {
+      const int v = cage.quads(f, k);
+      if (!isEP[v]) continue;
+      if (faceCluster[f] >= 0 && faceCluster[f] != uf.find(v))
+        throw Error("face " + std::to_string(f) + " holds extraordinary points that share no edge; refine the cage (one Catmull-Clark step) first");
+      faceCluster[f] = uf.find(v);
+    }
+
+  std::vector<Eigen::MatrixX3d> grids(nf);
+  for (const auto& [root, members] : clusterEPs) {
+    ClusterSolve cs{cage, topo, guidance, options, members, {}, {}, {}};
+    for (int v : members)
+      for (const auto& c : topo.facesAround(v))
+        if (cs.localFace.emplace(c.face, static_cast<int>(cs.faces.size())).second) cs.faces.push_back(c.face);
+    cs.solve(grids, result);
+    ++result.clusters;
+  }
+  for (int f = 0; f < nf; ++f) {
+    if (faceCluster[f] < 0) {
+      result.patches.push_back({f, -1, guidance.patches[f]});
+      continue;
+    }
+    ++result.irregularFaces;
+    for (int sub = 0; sub < 4; ++sub) result.patches.push_back({f, sub, subPatch(grids[f], sub)});
+  }
+  return result;
+}
+
+FaceJetFunction faceJets(const G2GnurbsResult& result) {
+  std::vector<int> first;
+  for (size_t i = 0; i < result.patches.size(); ++i) {
+    const int f = result.patches[i].face;
+    if (f >= static_cast<int>(first.size())) first.resize(f + 1, -1);
+    if (first[f] < 0) first[f] = static_cast<int>(i);
+  }
+  return [&result, first](int f, double u, double v) {
+    const GnurbsPatch& head = result.patches[first.at(f)];
+    double scale = 1;
+    const BSplineSurface* s = &head.surface;
+    if (head.sub >= 0) {  // sub-patches: pick the quarter, map to its [0,1]², chain-rule factor 2 per derivative
+      const int su = u > 0.5 ? 1 : 0, sv = v > 0.5 ? 1 : 0;
+      s = &result.patches[first[f] + 2 * sv + su].surface;
+      u = 2 * u - su;
+      v = 2 * v - sv;
+      scale = 2;
+    }
+    const auto d = s->derivatives(u, v, 2);
+    return SurfaceJet{d[0][0], scale * d[1][0], scale * d[0][1], scale * scale * d[2][0], scale * scale * d[1][1], scale * scale * d[0][2]};
+  };
+}
+
+}  // namespace holefill

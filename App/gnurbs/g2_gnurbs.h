@@ -1,0 +1,58 @@
+// G² G-NURBS surface of a quad cage (g2-gnurbs.md secs. 2-4): the guidance surface's bicubic
+// patch on every face outside EP 1-rings, and on each face of an EP 1-ring a 2×2 grid of
+// biquintic patches (the guidance patch elevated and split, sec. 2) whose coefficients are
+// re-solved so that every spoke edge is G² (spoke_conditions.h) and the face stays C² inside
+// and C² to its regular neighbours. The solve is the paper's stepwise least squares (sec. 4.1)
+// over each EP, or each pair of EPs joined by an edge, with its 1-ring faces:
+//   1. red/green/blue: the spoke rows 0-1 of the EP sub-patches and row 2 up to column 2, for
+//      all spokes jointly, nearest to the guidance in values and differences (eq. (21));
+//   2. black: columns 6-7 of the spoke rows beyond the EP sub-patch (fixed by C², eq. (11));
+//   3. yellow: row 2, columns 3-5 (eq. (22));
+//   4. the rest of each face by thin-plate energy under the C² conditions between its
+//      sub-patches (sec. 4.1.3).
+// The three coefficient rows along every face edge that is not a spoke stay the guidance's
+// ("gray"), which is what keeps the join to regular patches C². Each step satisfies the
+// projections of all constraints that the later steps need (stepwise_least_squares.h), so the
+// conditions hold to solver round-off. Adjacent EPs share one such problem (sec. 3.2.2) rather
+// than the paper's two decoupled ones; a pair is at most 2N−2 faces.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/bspline_surface.h"
+#include "geometry/stepwise_least_squares.h"
+#include "gnurbs/patch_continuity.h"
+#include "gnurbs/quad_cage.h"
+
+namespace holefill {
+
+struct G2GnurbsOptions {
+  double rho = 1;               // r_i of the connection function ρ (the paper takes 1)
+  StepwiseOptions solver;       // rank and regularisation thresholds of the stepwise solve
+};
+
+struct GnurbsPatch {
+  int face = -1;  // control face
+  int sub = -1;   // -1: the face's bicubic patch; 0..3: sub-patch in splitBezier order (bezier_patch.h)
+  BSplineSurface surface;
+};
+
+struct G2GnurbsResult {
+  std::vector<GnurbsPatch> patches;       // in control-face order, a face's sub-patches in order
+  std::vector<int> extraordinaryPoints;
+  int irregularFaces = 0;                 // faces in EP 1-rings (4 biquintic patches each)
+  int clusters = 0;                       // independent solves: single EPs and adjacent pairs
+  double constraintResidual = 0;          // max |M x − c| over all solves (model units / knot units²)
+  double infeasibility = 0;               // largest residual a step could not remove; ~0 on valid input
+};
+
+// Throws Error for cages the construction does not cover: EPs sharing a face without sharing
+// an edge, three or more EPs joined by edges, and sharp edges at an EP.
+G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& options = {});
+
+// The surface over each control face in face parameters (sub-patches rescaled), for
+// cageEdgeContinuity and evaluation; `result` must outlive the function.
+FaceJetFunction faceJets(const G2GnurbsResult& result);
+
+}  // namespace holefill

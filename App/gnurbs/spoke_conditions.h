@@ -1,0 +1,74 @@
+// G² conditions across a spoke edge of an EP 1-ring as linear conditions on Bézier
+// coefficients (g2-gnurbs.md sec. 3). The faces A and B on the two sides of the spoke are each
+// a 2×2 grid of biquintic patches, i.e. 11×11 coefficients; along the spoke, s runs from the
+// EP (m = 0) to the other end (m = 10) and t into each face (n = 0 on the spoke). With the
+// knot intervals d_s of the spoke and d_A, d_B across it (the intervals of the faces' other
+// edges at the EP) the patches are G² along the spoke when, for s on the spoke,
+//   (3)  A_t/d_A + B_t/d_B = β(s) A_s/d_s                                    (G1, α = γ = 1)
+//   (8)  B_tt/d_B² − A_tt/d_A² = ½ρ(s) W − β(s) W_s/d_s,  W = A_t/d_A − B_t/d_B
+// (eq. (8) is eq. (4) with the symmetrising choice δ = ββ' − ½βρ of eq. (6); it yields G² only
+// together with (3)). The connection functions are the paper's:
+//   EP with a regular other end (sec. 3.2.1): β = b(1 − σ)³, ρ = r(1 − σ)³ on the half next to
+//   the EP (σ its own parameter), β = ρ = 0 on the other half, where (3) and (8) then say
+//   that the two faces join C² in the knot-interval parameterisation;
+//   EPs at both ends (sec. 3.2.2, eq. (16)): β = b₀(1 − s) − b₁ s, ρ = r, s along the whole spoke.
+// Each half of each condition is a polynomial identity of degree ≤ 8 in σ; it holds iff it
+// holds at 9 distinct σ, which is how the rows are produced: exact, with no hand-expanded
+// coefficient formulas (the paper's eqs. (12)-(20) are their consequences).
+//
+// b is the G1 connection constant at the EP, from its eigen-polyhedron (the characteristic
+// configuration of G1 G-NURBS / G1 non-uniform Catmull–Clark). At s = 0, (3) says that the
+// spoke tangents scaled to the knot-interval parameterisation, τ_k = ∂_s R_k / d_k, satisfy
+// τ_{i−1} + τ_{i+1} = b_i τ_i around the EP. For planar τ_k this holds with a two-dimensional
+// family of tangent stars only if every sector (0, τ_i, τ_{i+1}) has the same area (the cross
+// product of the relation with τ_i), and the eigen-polyhedron's spokes, being parameter lines
+// of the characteristic map, have unit speed in that parameterisation: |τ_k| equal. Equal
+// areas and equal lengths give equal sector angles 2π/N, so b_i = 2 cos(2π/N) for every spoke,
+// whatever the knot intervals (they enter through d_s, d_A, d_B instead). At valence 4, b = 0
+// and (3), (8) are the C² conditions of the non-uniform bicubic B-spline.
+//
+// Valence 3 needs more than the paper says. At the EP, the s-derivative of (3) and (8) at s = 0
+// tie the spokes' second derivatives C_i and the sectors' twists X_i (uniform knots, σ the
+// half-spoke parameter):  X_i + X_{i−1} = β'(0) T_i + b C_i,
+//   C_{i−1} − C_{i+1} = ½ρ(0)(T_{i+1} − T_{i−1}) − b (X_i − X_{i−1}).
+// In the Fourier mode of the tangents (angle θ = 2π/N) the C coefficient is b² tan(θ/2) − 2 sin θ,
+// which vanishes exactly at N = 3, leaving T·(ρ(0) sin θ − b β'(0) tan(θ/2)) = 0: with the
+// paper's r = 1 the tangents must vanish and the EP degenerates (measured: |∂S| = 3e-14 there).
+// So at valence 3, r is the value that satisfies it (valence3Rho): −6 with a regular far end
+// (β'(0) = −3b, b = −1). A connection function with β'(0) = ρ(0) = 0 would avoid the
+// condition but was measured to over-constrain the spoke (β of degree 4 makes the spoke curve
+// quadratic; constraint residual 8e-6). The derivation assumes equal spoke intervals around the
+// valence-3 EP; other intervals there show as a non-zero infeasibility in the result.
+#pragma once
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace holefill {
+
+// Σ coefficient · point(id) = 0 over grid-point ids, one scalar condition applied per coordinate.
+struct GridCondition {
+  std::vector<std::pair<int, double>> terms;
+};
+
+double eigenPolyhedronB(int valence);
+
+struct SpokeConnection {
+  double dS = 1, dA = 1, dB = 1;  // knot intervals: of the spoke, across it into A and into B
+  double b0 = 0;                  // β at the EP end (s = 0)
+  bool epAtBothEnds = false;
+  double b1 = 0;                  // with EPs at both ends: the far EP's b (β(1) = −b1)
+  double r = 1;                   // ρ's scale r_i (the paper takes 1)
+};
+
+// ρ(0) at a valence-3 EP with connection constant b and β'(0) = betaSlope per half-spoke
+// parameter (see above): b β'(0) tan(π/3) / sin(2π/3).
+double valence3Rho(double b, double betaSlope);
+
+// Appends the G1 and G2 conditions of the spoke; a(m, n), b(m, n) give the grid-point ids of
+// faces A and B (m = 0..10 along the spoke from the EP, n = 0..2 into the face).
+void appendSpokeConditions(const SpokeConnection& connection, const std::function<int(int, int)>& a,
+                           const std::function<int(int, int)>& b, std::vector<GridCondition>& out);
+
+}  // namespace holefill
