@@ -1,5 +1,6 @@
 #include "gnurbs/bezier_extraction.h"
 
+#include <algorithm>
 #include <array>
 
 #include "geometry/bezier_patch.h"
@@ -26,11 +27,29 @@ struct Extractor {
     const int g = topo.acrossFace(f, k), m = topo.acrossEdge(f, k);
     return {cage.knot(a, corner(g, m + 2)), cage.knot(b, corner(g, m + 3))};
   }
+  // farIntervals as continuations of f's edges at A and B through them, for f's face points.
+  std::pair<double, double> continuations(int f, int k) const {
+    const auto far = farIntervals(f, k);
+    return {throughEP(corner(f, k), corner(f, k - 1), far.first), throughEP(corner(f, k + 1), corner(f, k + 2), far.second)};
+  }
+  // The interval continuing spoke (v, s) through v. At an EP no spoke continues it; the two
+  // faces beside a spoke would each take the spoke two steps round on their own side, and
+  // their face points along the spoke would then sit at different knot fractions (the
+  // surface not C² across the spoke even at its regular end, which the G² solve needs). So
+  // both take the mean of the spokes two steps round either way: the opposite spoke at valence 4.
+  bool smoothEP(int v) const { return topo.isExtraordinary(v) && featureEdges[v] == 0; }
+  double throughEP(int v, int s, double own) const {
+    if (!smoothEP(v)) return own;
+    const auto& sp = topo.spokes(v);
+    const int n = static_cast<int>(sp.size());
+    const int i = static_cast<int>(std::find(sp.begin(), sp.end(), s) - sp.begin());
+    return 0.5 * (cage.knot(v, sp[(i + 2) % n]) + cage.knot(v, sp[(i + n - 2) % n]));
+  }
 
   // The four face points of f, indexed by the corner they are nearest to.
   std::array<Eigen::Vector3d, 4> facePoints(int f) const {
     const int c0 = corner(f, 0), c1 = corner(f, 1), c2 = corner(f, 2), c3 = corner(f, 3);
-    const auto left = farIntervals(f, 3), right = farIntervals(f, 1), bottom = farIntervals(f, 0), top = farIntervals(f, 2);
+    const auto left = continuations(f, 3), right = continuations(f, 1), bottom = continuations(f, 0), top = continuations(f, 2);
     // d: intervals along u (row below: d0 d1 d2, row above: d3 d4 d5); e: along v (column left: e0 e1 e2, right: e3 e4 e5).
     const double d[6] = {left.second, cage.knot(c0, c1), right.first, left.first, cage.knot(c3, c2), right.second};
     const double e[6] = {bottom.first, cage.knot(c0, c3), top.second, bottom.second, cage.knot(c1, c2), top.first};

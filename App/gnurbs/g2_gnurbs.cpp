@@ -233,6 +233,13 @@ struct ClusterSolve {
       }
 
     const StepwiseResult sol = solveStepwise(prob, options.solver);
+    const double size = std::max(1.0, guide.cwiseAbs().maxCoeff());
+    if (sol.stepInfeasibility > 1e-9 * size) {
+      std::string who;
+      for (int v : eps) who += (who.empty() ? "" : " and ") + std::to_string(v);
+      result.warnings.push_back("extraordinary point " + who + ": the G² conditions are met only to " + std::to_string(sol.stepInfeasibility) +
+                                " (knot intervals that differ between its spokes make the guidance surface non-C² at the spokes' far ends)");
+    }
     result.constraintResidual = std::max(result.constraintResidual, sol.constraintResidual);
     result.infeasibility = std::max(result.infeasibility, sol.stepInfeasibility);
     for (int lf = 0; lf < nl; ++lf) {

@@ -13,7 +13,10 @@
 // The three coefficient rows along every face edge that is not a spoke stay the guidance's
 // ("gray"), which is what keeps the join to regular patches C². Each step satisfies the
 // projections of all constraints that the later steps need (stepwise_least_squares.h), so the
-// conditions hold to solver round-off. Adjacent EPs share one such problem (sec. 3.2.2) rather
+// conditions hold to solver round-off. Knot intervals may vary freely except on an EP's own
+// spokes: where those differ, the bicubic extraction (whose face points blend the intervals of
+// parallel rows) is not C² across a spoke even at its regular end, the gray rows cannot meet the
+// spoke conditions there, and the result carries a warning with the residual. Adjacent EPs share one such problem (sec. 3.2.2) rather
 // than the paper's two decoupled ones; a pair is at most 2N−2 faces.
 #pragma once
 
@@ -45,6 +48,7 @@ struct G2GnurbsResult {
   int clusters = 0;                       // independent solves: single EPs and adjacent pairs
   double constraintResidual = 0;          // max |M x − c| over all solves (model units / knot units²)
   double infeasibility = 0;               // largest residual a step could not remove; ~0 on valid input
+  std::vector<std::string> warnings;      // e.g. an EP whose conditions could not all be met, and why
 };
 
 // Throws Error for cages the construction does not cover: EPs sharing a face without sharing

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "geometry/error.h"
 #include "gnurbs/g2_gnurbs.h"
@@ -14,12 +15,18 @@ double height(double x, double y) { return 0.25 * std::sin(0.8 * x + 0.3) * std:
 
 // A valence-n EP (vertex 0) with n sectors of k×k quads: sector i spans spokes i and i+1, its
 // point (a, b) sits at a·e_i + b·e_{i+1} lifted onto height(), e_i at angle 2πi/n.
-QuadCage polarCage(int n, int k) {
+// interval(s, j): knot interval of the j-th edge out along spoke s and of every edge parallel to it.
+QuadCage polarCage(int n, int k, const std::function<double(int, int)>& interval = [](int, int) { return 1.0; }) {
   QuadCage c;
   c.vertices.resize(1 + n * k + n * k * k, 3);
+  auto along = [&](int spoke, int a) {
+    double t = 0;
+    for (int j = 0; j < a; ++j) t += interval(spoke % n, j);
+    return t;
+  };
   auto pos = [&](int i, int a, int b) {
-    const double ai = 2 * M_PI * i / n, aj = 2 * M_PI * (i + 1) / n;
-    const double x = a * std::cos(ai) + b * std::cos(aj), y = a * std::sin(ai) + b * std::sin(aj);
+    const double ai = 2 * M_PI * i / n, aj = 2 * M_PI * (i + 1) / n, ta = along(i, a), tb = along(i + 1, b);
+    const double x = ta * std::cos(ai) + tb * std::cos(aj), y = ta * std::sin(ai) + tb * std::sin(aj);
     return Eigen::RowVector3d(x, y, height(x, y));
   };
   auto id = [&](int i, int a, int b) {
@@ -35,7 +42,16 @@ QuadCage polarCage(int n, int k) {
   c.quads.resize(n * k * k, 4);
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < k; ++a)
-      for (int b = 0; b < k; ++b) c.quads.row((i * k + a) * k + b) << id(i, a, b), id(i, a + 1, b), id(i, a + 1, b + 1), id(i, a, b + 1);
+      for (int b = 0; b < k; ++b) {
+        c.quads.row((i * k + a) * k + b) << id(i, a, b), id(i, a + 1, b), id(i, a + 1, b + 1), id(i, a, b + 1);
+        c.setKnot(id(i, a, b), id(i, a + 1, b), interval(i, a));
+        c.setKnot(id(i, a, b), id(i, a, b + 1), interval((i + 1) % n, b));
+      }
+  for (int i = 0; i < n; ++i)  // the outer boundary edges
+    for (int a = 0; a < k; ++a) {
+      c.setKnot(id(i, a, k), id(i, a + 1, k), interval(i, a));
+      c.setKnot(id(i, k, a), id(i, k, a + 1), interval((i + 1) % n, a));
+    }
   return c;
 }
 
@@ -65,5 +81,46 @@ TEST(G2Gnurbs, SingleEPsOfValence3568AreG2AcrossEveryEdge) {
     EXPECT_LT(g2Spoke, 1e-6);
     EXPECT_LT(g1, 1e-8);
     EXPECT_LT(g2, 1e-6);
+  }
+}
+
+namespace {
+
+struct Worst {
+  double g0 = 0, g1 = 0, g2 = 0;
+};
+Worst worstContinuity(const QuadCage& cage, const G2GnurbsResult& r) {
+  Worst w;
+  for (const auto& e : cageEdgeContinuity(cage, CageTopology(cage), faceJets(r), 21, diagonal(cage))) {
+    w.g0 = std::max(w.g0, e.g0);
+    w.g1 = std::max(w.g1, e.g1);
+    w.g2 = std::max(w.g2, e.g2);
+  }
+  return w;
+}
+
+}  // namespace
+
+TEST(G2Gnurbs, NonUniformKnotIntervalsAndEPsNearTheBoundaryStayG2) {
+  // Valence 5 and 6 with a knot interval sequence per spoke line (edges parallel to a spoke share
+  // its intervals, as in a cage cut from NURBS) that differs from spoke to spoke beyond the
+  // 1-ring, the spokes' own first intervals equal (see G2GnurbsResult::warnings); and EPs whose
+  // 1-ring reaches the cage boundary (k = 2, 1).
+  struct Case {
+    int n, k;
+    bool nonUniform;
+  };
+  for (const Case c : {Case{5, 4, true}, Case{6, 3, true}, Case{5, 2, false}, Case{6, 1, false}}) {
+    SCOPED_TRACE("valence " + std::to_string(c.n) + ", k " + std::to_string(c.k) + (c.nonUniform ? ", non-uniform" : ""));
+    const auto interval = [&](int spoke, int j) { return c.nonUniform && j > 0 ? (1 + 0.6 * spoke / c.n) * (1 + 0.25 * j) : 1.0; };
+    const QuadCage cage = polarCage(c.n, c.k, interval);
+    const G2GnurbsResult r = buildG2Gnurbs(cage);
+    const Worst w = worstContinuity(cage, r);
+    std::printf("valence %d k %d%s: infeasibility %.1e  G0 %.1e G1 %.1e G2 %.1e\n", c.n, c.k, c.nonUniform ? " non-uniform" : "",
+                r.infeasibility, w.g0, w.g1, w.g2);
+    EXPECT_LT(r.infeasibility, 1e-10);
+    EXPECT_LT(w.g0, 1e-12);
+    EXPECT_LT(w.g1, 1e-8);
+    EXPECT_LT(w.g2, 1e-6);
   }
 }
