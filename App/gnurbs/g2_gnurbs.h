@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "geometry/bspline_surface.h"
-#include "geometry/stepwise_least_squares.h"
+#include "gnurbs/stepwise_least_squares.h"
 #include "gnurbs/patch_continuity.h"
 #include "gnurbs/quad_cage.h"
 

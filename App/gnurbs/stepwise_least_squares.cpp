@@ -1,4 +1,4 @@
-#include "geometry/stepwise_least_squares.h"
+#include "gnurbs/stepwise_least_squares.h"
 
 #include <Eigen/QR>
 #include <algorithm>
