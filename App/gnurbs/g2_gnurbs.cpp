@@ -10,6 +10,7 @@
 #include "geometry/bezier_patch.h"
 #include "geometry/error.h"
 #include "gnurbs/bezier_extraction.h"
+#include "gnurbs/catmull_clark.h"
 #include "gnurbs/spoke_conditions.h"
 
 namespace holefill {
@@ -117,11 +118,10 @@ struct ClusterSolve {
         if (isClusterEP(w)) {
           k.epAtBothEnds = true;
           k.b1 = eigenPolyhedronB(topo.valence(w));
-          if (n == 3) k.r = valence3Rho(k.b0, -(k.b0 + k.b1) / 2);
-          else if (topo.valence(w) == 3) k.r = valence3Rho(k.b1, -(k.b0 + k.b1) / 2);
-        } else if (n == 3) {
-          k.r = valence3Rho(k.b0, -3 * k.b0);
+          k.r1 = options.rho;
+          if (topo.valence(w) == 3) k.r1 = valence3Rho(isolatedBetaSlope(k.b1));
         }
+        if (n == 3) k.r = valence3Rho(isolatedBetaSlope(k.b0));
         appendSpokeConditions(k, A, B, conditions);
       }
     }
@@ -255,10 +255,47 @@ struct ClusterSolve {
 
 }  // namespace
 
-G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& options) {
+namespace {
+
+// Why the EPs of a cage are too close for the construction (a face holding EPs that share no
+// edge, or three EPs joined by edges), or "" when they are not.
+std::string epSpacingProblem(const QuadCage& cage, const CageTopology& topo) {
+  std::vector<bool> isEP(topo.vertexCount(), false);
+  for (int v : topo.extraordinaryPoints()) isEP[v] = true;
+  for (int v : topo.extraordinaryPoints()) {
+    const auto& sp = topo.spokes(v);
+    for (size_t i = 0; i < sp.size(); ++i)
+      for (size_t j = i + 1; j < sp.size(); ++j)
+        if (isEP[sp[i]] && isEP[sp[j]])
+          return "extraordinary points " + std::to_string(sp[i]) + ", " + std::to_string(v) + " and " + std::to_string(sp[j]) +
+                 " form a chain joined by edges";
+  }
+  for (int f = 0; f < topo.faceCount(); ++f)
+    for (int k = 0; k < 2; ++k)
+      if (isEP[cage.quads(f, k)] && isEP[cage.quads(f, k + 2)])
+        return "face " + std::to_string(f) + " holds extraordinary points " + std::to_string(cage.quads(f, k)) + " and " +
+               std::to_string(cage.quads(f, k + 2)) + ", which share no edge";
+  return "";
+}
+
+}  // namespace
+
+G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& options) {
+  G2GnurbsResult result;
+  result.cage = input;
+  for (;;) {
+    const std::string why = epSpacingProblem(result.cage, CageTopology(result.cage));
+    if (why.empty()) break;
+    // One step always suffices: afterwards every EP is an original vertex two edges from any other.
+    if (!options.refineWhenNeeded || result.refinements > 0)
+      throw Error(why + "; refine the cage (one Catmull-Clark step) first");
+    result.cage = catmullClarkStep(result.cage, CageTopology(result.cage));
+    ++result.refinements;
+    result.refinementReason = why;
+  }
+  const QuadCage& cage = result.cage;
   const CageTopology topo(cage);
   const GuidanceSurface guidance = extractGuidanceSurface(cage, topo);
-  G2GnurbsResult result;
   result.extraordinaryPoints = topo.extraordinaryPoints();
   const auto& eps = result.extraordinaryPoints;
   const int nf = topo.faceCount();
@@ -270,26 +307,17 @@ G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& option
       if (cage.isSharp(v, w))
         throw Error("sharp edge " + std::to_string(v) + "-" + std::to_string(w) + " ends at extraordinary point " + std::to_string(v) +
                     "; sharp edges at EPs are not supported by the G² construction yet");
-  // Clusters: EPs joined by cage edges; at most two, and EPs on one face must share an edge.
+  // Clusters: single EPs and pairs joined by an edge (epSpacingProblem ruled out the rest).
   UnionFind uf(topo.vertexCount());
   for (int v : eps)
     for (int w : topo.spokes(v))
       if (isEP[w]) uf.join(v, w);
   std::map<int, std::vector<int>> clusterEPs;
   for (int v : eps) clusterEPs[uf.find(v)].push_back(v);
-  for (const auto& [root, members] : clusterEPs)
-    if (members.size() > 2)
-      throw Error("extraordinary points " + std::to_string(members[0]) + ", " + std::to_string(members[1]) + " and " +
-                  std::to_string(members[2]) + " form a chain joined by edges; refine the cage (one Catmull-Clark step) first");
   std::vector<int> faceCluster(nf, -1);
   for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 4; ++k) {
-      const int v = cage.quads(f, k);
-      if (!isEP[v]) continue;
-      if (faceCluster[f] >= 0 && faceCluster[f] != uf.find(v))
-        throw Error("face " + std::to_string(f) + " holds extraordinary points that share no edge; refine the cage (one Catmull-Clark step) first");
-      faceCluster[f] = uf.find(v);
-    }
+    for (int k = 0; k < 4; ++k)
+      if (isEP[cage.quads(f, k)]) faceCluster[f] = uf.find(cage.quads(f, k));
 
   std::vector<Eigen::MatrixX3d> grids(nf);
   for (const auto& [root, members] : clusterEPs) {

@@ -17,7 +17,11 @@
 // spokes: where those differ, the bicubic extraction (whose face points blend the intervals of
 // parallel rows) is not C² across a spoke even at its regular end, the gray rows cannot meet the
 // spoke conditions there, and the result carries a warning with the residual. Adjacent EPs share one such problem (sec. 3.2.2) rather
-// than the paper's two decoupled ones; a pair is at most 2N−2 faces.
+// than the paper's two decoupled ones; a pair is at most 2N−2 faces. Their shared spoke uses a
+// connection of our own (spoke_conditions.h): G² holds exactly, but the tangent star at an EP
+// next to another can come out anisotropic where the guidance's is round (σ₂/σ₁ 0.08 against
+// 0.88 measured at a valence-3 EP next to a valence-6 one); a Catmull–Clark step separates
+// such EPs when that matters.
 #pragma once
 
 #include <string>
@@ -32,6 +36,9 @@ namespace holefill {
 
 struct G2GnurbsOptions {
   double rho = 1;               // r_i of the connection function ρ (the paper takes 1)
+  // Cages whose EPs are too close (a face with two EPs not on one edge, three EPs joined by
+  // edges) get one Catmull–Clark step first (catmull_clark.h); false: throw instead.
+  bool refineWhenNeeded = true;
   StepwiseOptions solver;       // rank and regularisation thresholds of the stepwise solve
 };
 
@@ -42,6 +49,9 @@ struct GnurbsPatch {
 };
 
 struct G2GnurbsResult {
+  QuadCage cage;                          // the cage the patches are over: the input, or its refinement
+  int refinements = 0;                    // Catmull–Clark steps applied to the input (0 or 1)
+  std::string refinementReason;           // why, naming the EPs of the input cage
   std::vector<GnurbsPatch> patches;       // in control-face order, a face's sub-patches in order
   std::vector<int> extraordinaryPoints;
   int irregularFaces = 0;                 // faces in EP 1-rings (4 biquintic patches each)
@@ -51,8 +61,8 @@ struct G2GnurbsResult {
   std::vector<std::string> warnings;      // e.g. an EP whose conditions could not all be met, and why
 };
 
-// Throws Error for cages the construction does not cover: EPs sharing a face without sharing
-// an edge, three or more EPs joined by edges, and sharp edges at an EP.
+// Throws Error for invalid cages (CageTopology), sharp edges at an EP, and EPs too close when
+// options.refineWhenNeeded is off.
 G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& options = {});
 
 // The surface over each control face in face parameters (sub-patches rescaled), for

@@ -59,7 +59,8 @@ CageTopology::CageTopology(const QuadCage& cage) {
   spokes_.assign(nv, {});
   boundary_.assign(nv, false);
   for (int v = 0; v < nv; ++v) {
-    if (cornerOf[v].face < 0) continue;  // unused vertex: no face, no spokes
+    // An unused vertex is most often an index off by one in the file the cage came from.
+    if (cornerOf[v].face < 0) throw Error("vertex " + std::to_string(v) + " is used by no quad; remove isolated vertices from the cage");
     // Turn backwards (across the outgoing edge) until the boundary or back at the start.
     Corner start = cornerOf[v];
     for (int steps = 0; steps <= nf; ++steps) {

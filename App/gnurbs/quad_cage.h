@@ -33,7 +33,7 @@ struct QuadCage {
 
 class CageTopology {
 public:
-  // Validates the cage (finite coordinates, indices in range, no repeated corner, every
+  // Validates the cage (finite coordinates, indices in range, every vertex used, no repeated corner, every
   // directed edge in one quad only, knot intervals positive and on cage edges, sharp edges and
   // anchors on the cage) and builds the adjacency.
   explicit CageTopology(const QuadCage& cage);

@@ -8,7 +8,6 @@ namespace holefill {
 
 double eigenPolyhedronB(int valence) { return 2 * std::cos(2 * M_PI / valence); }
 
-double valence3Rho(double b, double betaSlope) { return b * betaSlope * std::tan(M_PI / 3) / std::sin(2 * M_PI / 3); }
 
 void appendSpokeConditions(const SpokeConnection& k, const std::function<int(int, int)>& a,
                            const std::function<int(int, int)>& b, std::vector<GridCondition>& out) {
@@ -18,14 +17,14 @@ void appendSpokeConditions(const SpokeConnection& k, const std::function<int(int
     for (int q = 0; q < nodes; ++q) {
       const double sigma = 0.5 * (1 - std::cos(M_PI * (q + 0.5) / nodes));
       double beta, rho;
-      if (k.epAtBothEnds) {
-        const double s = 0.5 * (half + sigma);
-        beta = k.b0 * (1 - s) - k.b1 * s;
-        rho = k.r;
-      } else {
-        const double w = half == 0 ? std::pow(1 - sigma, 3) : 0.0;
+      // Each half takes the connection of the EP at its own end; a half that ends regular has none.
+      const double w = std::pow(1 - sigma, 3), wFar = std::pow(sigma, 3);
+      if (half == 0) {
         beta = k.b0 * w;
         rho = k.r * w;
+      } else {
+        beta = k.epAtBothEnds ? -k.b1 * wFar : 0.0;
+        rho = k.epAtBothEnds ? k.r1 * wFar : 0.0;
       }
       const Eigen::MatrixXd B = basisDerivatives(bezier5, 5, 5, sigma, 1);  // B(0, i) values, B(1, i) derivatives
       GridCondition g1, g2;

@@ -7,11 +7,17 @@
 //   (3)  A_t/d_A + B_t/d_B = β(s) A_s/d_s                                    (G1, α = γ = 1)
 //   (8)  B_tt/d_B² − A_tt/d_A² = ½ρ(s) W − β(s) W_s/d_s,  W = A_t/d_A − B_t/d_B
 // (eq. (8) is eq. (4) with the symmetrising choice δ = ββ' − ½βρ of eq. (6); it yields G² only
-// together with (3)). The connection functions are the paper's:
-//   EP with a regular other end (sec. 3.2.1): β = b(1 − σ)³, ρ = r(1 − σ)³ on the half next to
-//   the EP (σ its own parameter), β = ρ = 0 on the other half, where (3) and (8) then say
-//   that the two faces join C² in the knot-interval parameterisation;
-//   EPs at both ends (sec. 3.2.2, eq. (16)): β = b₀(1 − s) − b₁ s, ρ = r, s along the whole spoke.
+// together with (3)). The connection functions:
+//   EP with a regular other end (sec. 3.2.1, the paper's): β = b(1 − σ)³, ρ = r(1 − σ)³ on the
+//   half next to the EP (σ its own parameter), β = ρ = 0 on the other half, where (3) and (8)
+//   then say that the two faces join C² in the knot-interval parameterisation;
+//   EPs at both ends: each half takes the same connection from its own EP, β = b₀(1 − σ)³ and
+//   β = −b₁σ³ (so β runs as b₁(1 − σ')³ from the far EP), ρ likewise, meeting C² at the middle.
+//   The paper's eq. (16), β = b₀(1 − s) − b₁s and ρ = r along the whole spoke, was measured to
+//   force a rank-1 tangent star at one or both EPs (σ₂/σ₁ of the tangents = 0 for valences 3+5,
+//   5+6, 3+6, 3+3, 6+8; exact G1/G2 on every sample but the EP itself), as were mirrored
+//   connections vanishing to order 2 or 4 at the middle; order 3 keeps every EP's own vertex
+//   conditions those of an isolated EP.
 // Each half of each condition is a polynomial identity of degree ≤ 8 in σ; it holds iff it
 // holds at 9 distinct σ, which is how the rows are produced: exact, with no hand-expanded
 // coefficient formulas (the paper's eqs. (12)-(20) are their consequences).
@@ -27,20 +33,25 @@
 // whatever the knot intervals (they enter through d_s, d_A, d_B instead). At valence 4, b = 0
 // and (3), (8) are the C² conditions of the non-uniform bicubic B-spline.
 //
-// Valence 3 needs more than the paper says. At the EP, the s-derivative of (3) and (8) at s = 0
-// tie the spokes' second derivatives C_i and the sectors' twists X_i (uniform knots, σ the
-// half-spoke parameter):  X_i + X_{i−1} = β'(0) T_i + b C_i,
-//   C_{i−1} − C_{i+1} = ½ρ(0)(T_{i+1} − T_{i−1}) − b (X_i − X_{i−1}).
-// In the Fourier mode of the tangents (angle θ = 2π/N) the C coefficient is b² tan(θ/2) − 2 sin θ,
-// which vanishes exactly at N = 3, leaving T·(ρ(0) sin θ − b β'(0) tan(θ/2)) = 0: with the
-// paper's r = 1 the tangents must vanish and the EP degenerates (measured: |∂S| = 3e-14 there).
-// So at valence 3, r is the value that satisfies it (valence3Rho): −6 with a regular far end
-// (β'(0) = −3b, b = −1). A connection function with β'(0) = ρ(0) = 0 would avoid the
-// condition but was measured to over-constrain the spoke (β of degree 4 makes the spoke curve
-// quadratic; constraint residual 8e-6). The derivation assumes equal spoke intervals around the
-// valence-3 EP; other intervals there show as a non-zero infeasibility in the result.
+// Valence 3 needs more than the paper says. At the EP, the σ-derivative of (3) and (8) at σ = 0
+// tie the spokes' tangents T_i, second derivatives C_i and the sectors' twists X_i (uniform
+// knots, σ the half-spoke parameter, β'_i and ρ_i spoke i's values at the EP):
+//   X_i + X_{i−1} = β'_i T_i + b C_i,   C_{i−1} − C_{i+1} = ½ρ_i (T_{i+1} − T_{i−1}) − b (X_i − X_{i−1}).
+// At N = 3 (b = −1, indices mod 3) eliminating C_i makes the twists cancel, leaving
+//   (β'_{i−1} + ½ρ_i) T_{i−1} = (β'_{i+1} + ½ρ_i) T_{i+1}
+// for every i. Two spoke tangents of a non-degenerate EP are independent, so all three spokes
+// need the same β'(0) and ρ(0) = −2β'(0) (valence3Rho). With the paper's r = 1 the only
+// solution is T = 0, a degenerate EP (measured: |∂S| = 3e-14 there). With a regular far end,
+// β'(0) = −3b gives r = −6. On a spoke to a second EP, β is then quadratic (or cubic) rather
+// than the paper's linear eq. (16), so that its slope at the valence-3 end is the same −3b;
+// measured: with the linear β a valence-3 EP next to another EP had G1 errors of 1.5–2 rad.
+// A connection function with β'(0) = ρ(0) = 0 would avoid the condition but was measured to
+// over-constrain the spoke (β of degree 4 makes the spoke curve quadratic; constraint
+// residual 8e-6). The derivation assumes equal spoke intervals around the valence-3 EP; other
+// intervals there show as a non-zero infeasibility in the result.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -57,14 +68,20 @@ double eigenPolyhedronB(int valence);
 struct SpokeConnection {
   double dS = 1, dA = 1, dB = 1;  // knot intervals: of the spoke, across it into A and into B
   double b0 = 0;                  // β at the EP end (s = 0)
+  double r = 1;                   // ρ's scale r_i (the paper takes 1); with EPs at both ends, ρ(0)
+  // With EPs at both ends: the far EP's b (β(1) = −b1) and ρ(1) (ρ is linear between r and r1),
+  // and β'(0), β'(1) each in its own end's half-spoke parameter running away from that EP, NaN
+  // where free. β is the polynomial of least degree through these (linear as in eq. (16) when
+  // both slopes are free).
   bool epAtBothEnds = false;
-  double b1 = 0;                  // with EPs at both ends: the far EP's b (β(1) = −b1)
-  double r = 1;                   // ρ's scale r_i (the paper takes 1)
+  double b1 = 0, r1 = 1;
+  double slope0 = std::nan(""), slope1 = std::nan("");
 };
 
-// ρ(0) at a valence-3 EP with connection constant b and β'(0) = betaSlope per half-spoke
-// parameter (see above): b β'(0) tan(π/3) / sin(2π/3).
-double valence3Rho(double b, double betaSlope);
+// The slope β'(0) per half-spoke parameter that every spoke of a valence-3 EP with a regular
+// far end has (β = b(1 − σ)³), and ρ(0) at a valence-3 EP whose spokes have slope β'(0).
+inline double isolatedBetaSlope(double b) { return -3 * b; }
+inline double valence3Rho(double betaSlope) { return -2 * betaSlope; }
 
 // Appends the G1 and G2 conditions of the spoke; a(m, n), b(m, n) give the grid-point ids of
 // faces A and B (m = 0..10 along the spoke from the EP, n = 0..2 into the face).
