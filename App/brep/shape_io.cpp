@@ -25,18 +25,12 @@
 #include <unistd.h>
 
 #include "geometry/error.h"
+#include "geometry/text_file.h"
 #include "geometry/tolerances.h"
 
 namespace holefill {
 
 namespace {
-
-std::string extensionOf(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), ::tolower);
-  return e;
-}
 
 bool finitePoint(const gp_Pnt& p) {
   return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z()) &&
@@ -98,7 +92,7 @@ TopoDS_Shape readShape(const std::string& path, double timeLimit) {
   if (stat(path.c_str(), &st) != 0) throw Error("cannot open '" + path + "': no such file");
   if (!S_ISREG(st.st_mode)) throw Error("'" + path + "' is not a regular file");
   if (st.st_size == 0) throw Error("'" + path + "' is empty");
-  const std::string ext = extensionOf(path);
+  const std::string ext = fileExtension(path);
   if (ext != "brep" && ext != "brp" && ext != "step" && ext != "stp")
     throw Error("unsupported file type '." + ext + "' of '" + path + "': use .brep or .step");
   // Trial read in a child: a hang or crash there costs only the child.
@@ -141,7 +135,7 @@ TopoDS_Shape readShape(const std::string& path, double timeLimit) {
 
 void writeShape(const TopoDS_Shape& shape, const std::string& path) {
   if (shape.IsNull()) throw Error("nothing to write to '" + path + "': the shape is empty");
-  const std::string ext = extensionOf(path);
+  const std::string ext = fileExtension(path);
   const std::string tmp = path + ".tmp" + std::to_string(getpid()) + "." + ext;
   bool ok = false;
   try {

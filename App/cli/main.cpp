@@ -9,6 +9,7 @@
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -21,6 +22,12 @@
 #include "brep/sample_models.h"
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
+#include "geometry/text_file.h"
+#include "gnurbs/cage_io.h"
+#include "gnurbs/gnurbs_brep.h"
+#include "gnurbs/gnurbs_report.h"
+#include "gnurbs/sample_cages.h"
+#include "geometry/atomic_file.h"
 #include "geometry/error.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
@@ -47,7 +54,10 @@ const char* kUsage =
     "                [--shape-order 0|1|2|3] [--triangulation angle|dihedral|auto] "
     "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
     "  holefill mesh-holes MESH [--json]\n"
-    "  holefill samples DIR        write the bundled sample models (.brep, and scan_with_holes.obj)\n"
+    "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine] [--json]\n"
+    "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
+    "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json\n"
+    "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
     "  holefill eval uvtran [--weights W] [--samples N] [--split test|validation]\n"
@@ -61,7 +71,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine"};
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -265,6 +275,43 @@ int cmdMeshFill(const Args& a) {
   return code;
 }
 
+// Exit 0 when written with every G² condition met, 3 when written with warnings (the report
+// says which EP fell short and by how much).
+int cmdGnurbs(const Args& a) {
+  if (a.input.empty()) throw Error("gnurbs: no cage file");
+  if (!a.has("--out")) throw Error("gnurbs: --out OUT.step (or .brep) is required");
+  const std::string out = a.get("--out"), ext = fileExtension(out);
+  if (ext != "step" && ext != "stp" && ext != "brep" && ext != "brp") throw Error("gnurbs: --out must end in .step or .brep, got '" + out + "'");
+  QuadCage cage = readCage(a.input);
+  if (a.has("--sharp")) addSharpEdgesFromJson(cage, readFileBytes(a.get("--sharp"), 1 << 26), a.get("--sharp"));
+  if (a.has("--anchors")) addAnchorsFromJson(cage, readFileBytes(a.get("--anchors"), 1 << 26), a.get("--anchors"));
+  G2GnurbsOptions o;
+  o.refineWhenNeeded = !a.has("--no-refine");
+  const auto t0 = std::chrono::steady_clock::now();
+  const G2GnurbsResult r = buildG2Gnurbs(cage, o);
+  const GnurbsBrep b = gnurbsToBrep(r);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const GnurbsContinuity c = measureGnurbsContinuity(r);
+  const std::string sidecar = out.substr(0, out.size() - ext.size() - 1) + ".faces.json";
+  writeShape(b.shape, out);
+  writeFileAtomically(sidecar, b.sidecarJson + "\n");
+  if (a.has("--json")) {
+    std::cout << gnurbsReportJson(r, c, &b, seconds) << "\n";
+  } else {
+    std::printf("cage: %d vertices, %d quads%s; %zu extraordinary points, %d faces in their 1-rings\n", static_cast<int>(r.cage.vertices.rows()),
+                static_cast<int>(r.cage.quads.rows()), r.refinements ? " after one Catmull-Clark step" : "", r.extraordinaryPoints.size(),
+                r.irregularFaces);
+    if (r.refinements) std::printf("refined because %s\n", r.refinementReason.c_str());
+    std::printf("patches: %d B-rep faces in %s shell (%d free edges, %s), %.3f s\n", b.faces, b.closed ? "a closed" : "an open", b.freeEdges,
+                b.valid ? "valid" : "INVALID", seconds);
+    std::printf("continuity over %d cage edges: spokes G1 %.2e rad, G2 %.2e; elsewhere G1 %.2e rad, G2 %.2e; G0 %.1e\n", c.edges, c.g1Spokes,
+                c.g2Spokes, c.g1Elsewhere, c.g2Elsewhere, c.g0);
+    std::printf("wrote %s and %s\n", out.c_str(), sidecar.c_str());
+  }
+  for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return r.warnings.empty() ? 0 : 3;
+}
+
 int cmdSamples(const Args& a) {
   if (a.input.empty()) throw Error("samples: no output folder");
   for (const auto& n : samples::names()) {
@@ -275,6 +322,11 @@ int cmdSamples(const Args& a) {
   const std::string mesh = a.input + "/scan_with_holes.obj";
   writeMesh(samples::scanWithHoles(), mesh);
   std::printf("%s\n", mesh.c_str());
+  for (const auto& n : cages::sampleCageNames()) {
+    const std::string path = a.input + "/" + n + ".obj";
+    writeFileAtomically(path, formatCageObj(cages::sampleCage(n)));
+    std::printf("%s\n", path.c_str());
+  }
   return 0;
 }
 
@@ -301,6 +353,7 @@ int main(int argc, char** argv) {
     if (a.verb == "render") return cmdRender(a);
     if (a.verb == "mesh-fill") return cmdMeshFill(a);
     if (a.verb == "mesh-holes") return cmdMeshHoles(a);
+    if (a.verb == "gnurbs") return cmdGnurbs(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

@@ -70,13 +70,16 @@ struct Extractor {
     return out;
   }
 
-  // Interval of the feature line's continuation beyond v, away from neighbour `from`; 0 where
-  // the line ends or meets others there (the line's B-spline then interpolates v).
+  // Interval of the feature line's continuation beyond v, away from neighbour `from`. Where
+  // the line ends or meets others at v, the line's B-spline interpolates v with a mirrored
+  // phantom point (the natural end): the continuation is the edge's own interval, which puts
+  // the end's Bézier point a third of the way along the edge rather than on v (a zero-length
+  // end tangent, measured as singular normals at every boundary corner of an open cage).
   double continuation(int v, int from) const {
-    if (featureEdges[v] != 2 || (topo.onBoundary(v) && topo.facesAround(v).size() == 1)) return 0;
+    if (featureEdges[v] != 2 || (topo.onBoundary(v) && topo.facesAround(v).size() == 1)) return cage.knot(v, from);
     for (int s : topo.spokes(v))
       if (s != from && isFeatureEdge(v, s)) return cage.knot(v, s);
-    return 0;
+    return cage.knot(v, from);
   }
   bool isFeatureEdge(int a, int b) const {
     if (cage.isSharp(a, b)) return true;
@@ -95,7 +98,7 @@ GuidanceSurface extractGuidanceSurface(const QuadCage& cage, const CageTopology&
     for (int s : topo.spokes(v)) x.featureEdges[v] += x.isFeatureEdge(v, s) ? 1 : 0;
   for (const auto& [v, a] : cage.anchors)
     if (!topo.isExtraordinary(v))
-      throw Error("vertex " + std::to_string(v) + " has an anchor but is not an extraordinary point; anchors replace EP vertex points");
+      throw Error(cage.vertexName(v) + " has an anchor but is not an extraordinary point; anchors replace EP vertex points");
 
   std::vector<std::array<Eigen::Vector3d, 4>> F(nf);
   for (int f = 0; f < nf; ++f) F[f] = x.facePoints(f);

@@ -74,6 +74,7 @@ QuadCage catmullClarkStep(const QuadCage& cage, const CageTopology& topo) {
       out.setSharp(E.b, nv + edgeOf(E.a, E.b));
     }
   out.anchors = cage.anchors;
+  out.numberBase = cage.numberBase;
   return out;
 }
 

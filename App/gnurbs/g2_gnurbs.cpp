@@ -236,7 +236,7 @@ struct ClusterSolve {
     const double size = std::max(1.0, guide.cwiseAbs().maxCoeff());
     if (sol.stepInfeasibility > 1e-9 * size) {
       std::string who;
-      for (int v : eps) who += (who.empty() ? "" : " and ") + std::to_string(v);
+      for (int v : eps) who += (who.empty() ? "" : " and ") + std::to_string(v + cage.numberBase);
       result.warnings.push_back("extraordinary point " + who + ": the G² conditions are met only to " + std::to_string(sol.stepInfeasibility) +
                                 " (knot intervals that differ between its spokes make the guidance surface non-C² at the spokes' far ends)");
     }
@@ -257,9 +257,11 @@ struct ClusterSolve {
 
 namespace {
 
-// Why the EPs of a cage are too close for the construction (a face holding EPs that share no
-// edge, or three EPs joined by edges), or "" when they are not.
-std::string epSpacingProblem(const QuadCage& cage, const CageTopology& topo) {
+// Why the cage needs a Catmull–Clark step before the construction, or "" when it does not:
+// EPs too close (a face holding EPs that share no edge, three EPs joined by edges), or a sharp
+// edge touching an EP's 1-ring elsewhere than at the EP (its crease would break the guidance's
+// C² where the 1-ring's border rows are taken from it; measured G1 0.3 rad on the spokes).
+std::string refinementNeed(const QuadCage& cage, const CageTopology& topo) {
   std::vector<bool> isEP(topo.vertexCount(), false);
   for (int v : topo.extraordinaryPoints()) isEP[v] = true;
   for (int v : topo.extraordinaryPoints()) {
@@ -267,15 +269,39 @@ std::string epSpacingProblem(const QuadCage& cage, const CageTopology& topo) {
     for (size_t i = 0; i < sp.size(); ++i)
       for (size_t j = i + 1; j < sp.size(); ++j)
         if (isEP[sp[i]] && isEP[sp[j]])
-          return "extraordinary points " + std::to_string(sp[i]) + ", " + std::to_string(v) + " and " + std::to_string(sp[j]) +
+          return "extraordinary points " + std::to_string(sp[i] + cage.numberBase) + ", " + std::to_string(v + cage.numberBase) + " and " +
+                 std::to_string(sp[j] + cage.numberBase) +
                  " form a chain joined by edges";
   }
   for (int f = 0; f < topo.faceCount(); ++f)
     for (int k = 0; k < 2; ++k)
       if (isEP[cage.quads(f, k)] && isEP[cage.quads(f, k + 2)])
-        return "face " + std::to_string(f) + " holds extraordinary points " + std::to_string(cage.quads(f, k)) + " and " +
-               std::to_string(cage.quads(f, k + 2)) + ", which share no edge";
+        return cage.quadName(f) + " holds extraordinary points " + std::to_string(cage.quads(f, k) + cage.numberBase) + " and " +
+               std::to_string(cage.quads(f, k + 2) + cage.numberBase) + ", which share no edge";
+  for (std::uint64_t key : cage.sharp) {
+    const int a = static_cast<int>(key & 0xffffffffu), b = static_cast<int>(key >> 32);
+    for (int end : {a, b})
+      for (const auto& c : topo.facesAround(end))
+        for (int k = 0; k < 4; ++k) {
+          const int v = cage.quads(c.face, k);
+          if (isEP[v] && v != a && v != b)
+            return "sharp " + cage.edgeName(a, b) + " touches the 1-ring of extraordinary point " + std::to_string(v + cage.numberBase);
+        }
+  }
   return "";
+}
+
+// Vertices inside the cage where exactly one sharp edge ends (a dart): the extraction
+// interpolates them, so the surface around is only C0 there.
+std::vector<int> darts(const QuadCage& cage, const CageTopology& topo) {
+  std::vector<int> out;
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (topo.onBoundary(v)) continue;
+    int sharp = 0;
+    for (int w : topo.spokes(v)) sharp += cage.isSharp(v, w) ? 1 : 0;
+    if (sharp == 1) out.push_back(v);
+  }
+  return out;
 }
 
 }  // namespace
@@ -283,10 +309,19 @@ std::string epSpacingProblem(const QuadCage& cage, const CageTopology& topo) {
 G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& options) {
   G2GnurbsResult result;
   result.cage = input;
+  {
+    const CageTopology topo(input);
+    for (int v : topo.extraordinaryPoints())
+      for (int w : topo.spokes(v))
+        if (input.isSharp(v, w))
+          throw Error("sharp " + input.edgeName(v, w) + " ends at extraordinary point " + std::to_string(v + input.numberBase) +
+                      "; sharp edges at EPs are not supported by the G² construction yet");
+  }
   for (;;) {
-    const std::string why = epSpacingProblem(result.cage, CageTopology(result.cage));
+    const std::string why = refinementNeed(result.cage, CageTopology(result.cage));
     if (why.empty()) break;
-    // One step always suffices: afterwards every EP is an original vertex two edges from any other.
+    // One step always suffices: afterwards every EP is an original vertex two edges from any
+    // other, and the children of a sharp edge are two edges from every EP's new 1-ring.
     if (!options.refineWhenNeeded || result.refinements > 0)
       throw Error(why + "; refine the cage (one Catmull-Clark step) first");
     result.cage = catmullClarkStep(result.cage, CageTopology(result.cage));
@@ -302,12 +337,10 @@ G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& optio
   std::vector<bool> isEP(topo.vertexCount(), false);
   for (int v : eps) isEP[v] = true;
 
-  for (int v : eps)
-    for (int w : topo.spokes(v))
-      if (cage.isSharp(v, w))
-        throw Error("sharp edge " + std::to_string(v) + "-" + std::to_string(w) + " ends at extraordinary point " + std::to_string(v) +
-                    "; sharp edges at EPs are not supported by the G² construction yet");
-  // Clusters: single EPs and pairs joined by an edge (epSpacingProblem ruled out the rest).
+  for (int v : darts(cage, topo))
+    result.warnings.push_back("a sharp edge ends inside the cage at " + cage.vertexName(v) +
+                              " (a dart): the surface is only C0 around that vertex; end creases at the cage boundary or at other creases");
+  // Clusters: single EPs and pairs joined by an edge (refinementNeed ruled out the rest).
   UnionFind uf(topo.vertexCount());
   for (int v : eps)
     for (int w : topo.spokes(v))

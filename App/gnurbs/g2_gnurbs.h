@@ -37,7 +37,8 @@ namespace holefill {
 struct G2GnurbsOptions {
   double rho = 1;               // r_i of the connection function ρ (the paper takes 1)
   // Cages whose EPs are too close (a face with two EPs not on one edge, three EPs joined by
-  // edges) get one Catmull–Clark step first (catmull_clark.h); false: throw instead.
+  // edges) or with a sharp edge touching an EP's 1-ring get one Catmull–Clark step first
+  // (catmull_clark.h); false: throw instead.
   bool refineWhenNeeded = true;
   StepwiseOptions solver;       // rank and regularisation thresholds of the stepwise solve
 };

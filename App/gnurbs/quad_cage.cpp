@@ -17,19 +17,19 @@ CageTopology::CageTopology(const QuadCage& cage) {
   const int nv = static_cast<int>(cage.vertices.rows()), nf = static_cast<int>(cage.quads.rows());
   if (nf == 0) throw Error("the cage has no quads");
   if (!cage.vertices.allFinite()) throw Error("the cage has a vertex with a non-finite coordinate");
-  auto name = [](int f) { return "quad " + std::to_string(f); };
+  auto name = [&](int f) { return cage.quadName(f); };
   std::unordered_map<std::uint64_t, int> directed;  // (from << 32 | to) → 4*face+edge
   for (int f = 0; f < nf; ++f) {
     for (int k = 0; k < 4; ++k) {
       const int v = cage.quads(f, k);
-      if (v < 0 || v >= nv) throw Error(name(f) + " refers to vertex " + std::to_string(v) + ", which does not exist");
+      if (v < 0 || v >= nv) throw Error(name(f) + " refers to " + cage.vertexName(v) + ", which does not exist");
       for (int m = 0; m < k; ++m)
-        if (cage.quads(f, m) == v) throw Error(name(f) + " repeats vertex " + std::to_string(v));
+        if (cage.quads(f, m) == v) throw Error(name(f) + " repeats " + cage.vertexName(v));
     }
     for (int k = 0; k < 4; ++k) {
       const auto from = static_cast<std::uint64_t>(cage.quads(f, k)), to = static_cast<std::uint64_t>(cage.quads(f, (k + 1) % 4));
       if (!directed.emplace((from << 32) | to, 4 * f + k).second)
-        throw Error("edge " + std::to_string(from) + "-" + std::to_string(to) + " is used twice in the same direction (" +
+        throw Error(cage.edgeName(static_cast<int>(from), static_cast<int>(to)) + " is used twice in the same direction (" +
                     name(f) + "): the cage is non-manifold or not consistently oriented");
     }
   }
@@ -45,11 +45,11 @@ CageTopology::CageTopology(const QuadCage& cage) {
     return directed.count((a << 32) | b) > 0 || directed.count((b << 32) | a) > 0;
   };
   for (const auto& [key, d] : cage.knots) {
-    if (!isEdge(key)) throw Error("a knot interval is given for " + std::to_string(key & 0xffffffffu) + "-" + std::to_string(key >> 32) + ", which is not a cage edge");
-    if (!(d > 0) || !std::isfinite(d)) throw Error("knot intervals must be positive and finite; edge " + std::to_string(key & 0xffffffffu) + "-" + std::to_string(key >> 32) + " has " + std::to_string(d));
+    if (!isEdge(key)) throw Error("a knot interval is given for " + cage.edgeName(key) + ", which is not a cage edge");
+    if (!(d > 0) || !std::isfinite(d)) throw Error("knot intervals must be positive and finite; " + cage.edgeName(key) + " has " + std::to_string(d));
   }
   for (std::uint64_t key : cage.sharp)
-    if (!isEdge(key)) throw Error("sharp edge " + std::to_string(key & 0xffffffffu) + "-" + std::to_string(key >> 32) + " is not a cage edge");
+    if (!isEdge(key)) throw Error("sharp " + cage.edgeName(key) + " is not a cage edge");
 
   // Rotation about a vertex: the face across a corner's incoming edge holds the next corner.
   std::vector<Corner> cornerOf(nv, Corner{-1, -1});
@@ -60,7 +60,7 @@ CageTopology::CageTopology(const QuadCage& cage) {
   boundary_.assign(nv, false);
   for (int v = 0; v < nv; ++v) {
     // An unused vertex is most often an index off by one in the file the cage came from.
-    if (cornerOf[v].face < 0) throw Error("vertex " + std::to_string(v) + " is used by no quad; remove isolated vertices from the cage");
+    if (cornerOf[v].face < 0) throw Error(cage.vertexName(v) + " is used by no quad; remove isolated vertices from the cage");
     // Turn backwards (across the outgoing edge) until the boundary or back at the start.
     Corner start = cornerOf[v];
     for (int steps = 0; steps <= nf; ++steps) {
@@ -86,10 +86,10 @@ CageTopology::CageTopology(const QuadCage& cage) {
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 4; ++k) ++uses[cage.quads(f, k)];
   for (int v = 0; v < nv; ++v)
-    if (uses[v] != around_[v].size()) throw Error("vertex " + std::to_string(v) + " is non-manifold (two fans of quads meet there)");
+    if (uses[v] != around_[v].size()) throw Error(cage.vertexName(v) + " is non-manifold (two fans of quads meet there)");
   for (const auto& [v, a] : cage.anchors) {
-    if (v < 0 || v >= nv) throw Error("an anchor is given for vertex " + std::to_string(v) + ", which does not exist");
-    if (!a.allFinite()) throw Error("the anchor of vertex " + std::to_string(v) + " is not finite");
+    if (v < 0 || v >= nv) throw Error("an anchor is given for " + cage.vertexName(v) + ", which does not exist");
+    if (!a.allFinite()) throw Error("the anchor of " + cage.vertexName(v) + " is not finite");
   }
 }
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "geometry/edge_key.h"
@@ -23,12 +24,21 @@ struct QuadCage {
   std::map<std::uint64_t, double> knots;         // edgeKey → knot interval (> 0); absent = 1
   std::set<std::uint64_t> sharp;                 // edgeKey of C0 crease edges
   std::map<int, Eigen::Vector3d> anchors;        // sharp EP vertex → its anchor A_EP
+  // Messages name vertices and quads from this base: 0 for arrays (Python), 1 for cages read
+  // from OBJ files, so a user finds the element where the error says it is.
+  int numberBase = 0;
 
   static std::uint64_t edgeKey(int a, int b) { return undirectedEdgeKey(a, b); }
   double knot(int a, int b) const;
   bool isSharp(int a, int b) const { return sharp.count(edgeKey(a, b)) > 0; }
   void setKnot(int a, int b, double d) { knots[edgeKey(a, b)] = d; }
   void setSharp(int a, int b) { sharp.insert(edgeKey(a, b)); }
+  std::string vertexName(int v) const { return "vertex " + std::to_string(v + numberBase); }
+  std::string quadName(int f) const { return "quad " + std::to_string(f + numberBase); }
+  std::string edgeName(std::uint64_t key) const {
+    return "edge " + std::to_string((key & 0xffffffffu) + numberBase) + "-" + std::to_string((key >> 32) + numberBase);
+  }
+  std::string edgeName(int a, int b) const { return "edge " + std::to_string(a + numberBase) + "-" + std::to_string(b + numberBase); }
 };
 
 class CageTopology {

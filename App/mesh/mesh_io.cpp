@@ -13,24 +13,13 @@
 
 #include "geometry/atomic_file.h"
 #include "geometry/error.h"
+#include "geometry/text_file.h"
 
 namespace holefill {
 
 namespace {
 
 constexpr std::size_t kMaxFileBytes = std::size_t(4) << 30;  // 4 GiB: beyond any mesh we fill in memory
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-std::string extensionOf(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  const auto slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  return lower(path.substr(dot + 1));
-}
 
 struct Builder {
   std::string name;
@@ -66,20 +55,6 @@ struct Builder {
     return m;
   }
 };
-
-bool parseDouble(const std::string& tok, double& v) {
-  if (tok.empty()) return false;
-  char* end = nullptr;
-  v = std::strtod(tok.c_str(), &end);
-  return end == tok.c_str() + tok.size();
-}
-
-bool parseInt(const std::string& tok, long long& v) {
-  if (tok.empty()) return false;
-  char* end = nullptr;
-  v = std::strtoll(tok.c_str(), &end, 10);
-  return end == tok.c_str() + tok.size();
-}
 
 TriangleMesh parseObj(const std::string& bytes, Builder& b) {
   std::istringstream in(bytes);
@@ -343,7 +318,7 @@ TriangleMesh parseStl(const std::string& bytes, Builder& b) {
 TriangleMesh parseMesh(const std::string& bytes, const std::string& extension, const std::string& name) {
   Builder b;
   b.name = name;
-  const std::string ext = lower(extension);
+  const std::string ext = lowerCase(extension);
   if (bytes.empty()) throw Error("'" + name + "' is empty");
   if (ext == "obj") return parseObj(bytes, b);
   if (ext == "off") return parseOff(bytes, b);
@@ -353,22 +328,15 @@ TriangleMesh parseMesh(const std::string& bytes, const std::string& extension, c
 }
 
 TriangleMesh readMesh(const std::string& path) {
-  const std::string ext = extensionOf(path);
+  const std::string ext = fileExtension(path);
   if (ext != "obj" && ext != "off" && ext != "ply" && ext != "stl")
     throw Error("unsupported mesh type '." + ext + "' of '" + path + "': use .obj, .off, .ply or .stl");
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error("cannot open '" + path + "': check that it exists and is readable");
-  const std::streamoff size = in.tellg();
-  if (size < 0 || static_cast<std::size_t>(size) > kMaxFileBytes) throw Error("'" + path + "' is larger than 4 GiB");
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  in.seekg(0);
-  in.read(bytes.data(), size);
-  if (!in) throw Error("cannot read '" + path + "'");
+  const std::string bytes = readFileBytes(path, kMaxFileBytes);
   return parseMesh(bytes, ext, path);
 }
 
 std::string formatMesh(const TriangleMesh& mesh, const std::string& extension) {
-  const std::string ext = lower(extension);
+  const std::string ext = lowerCase(extension);
   std::ostringstream out;
   out << std::setprecision(17);
   const Eigen::Index nv = mesh.vertices.rows(), nt = mesh.triangles.rows();
@@ -410,7 +378,7 @@ std::string formatMesh(const TriangleMesh& mesh, const std::string& extension) {
 }
 
 void writeMesh(const TriangleMesh& mesh, const std::string& path) {
-  writeFileAtomically(path, formatMesh(mesh, extensionOf(path)));
+  writeFileAtomically(path, formatMesh(mesh, fileExtension(path)));
 }
 
 }  // namespace holefill

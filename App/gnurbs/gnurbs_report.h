@@ -1,0 +1,27 @@
+// What a G-NURBS build reports to its users (CLI --json, Python, the FreeCAD object): the
+// construction's diagnostics and the continuity it reached, measured with cageEdgeContinuity
+// over every interior cage edge (DESIGN.md's G1/G2), near EPs (spoke edges) and elsewhere.
+#pragma once
+
+#include <string>
+
+#include "gnurbs/g2_gnurbs.h"
+#include "gnurbs/gnurbs_brep.h"
+
+namespace holefill {
+
+struct GnurbsContinuity {
+  int edges = 0, spokeEdges = 0, sharpEdges = 0;
+  double g0 = 0;                        // max over all edges, / bounding-box diagonal
+  double g1Spokes = 0, g2Spokes = 0;    // max over spoke edges (radians, relative)
+  double g1Elsewhere = 0, g2Elsewhere = 0;
+  double maxCurvatureNearEPs = 0;       // max |κ| across spoke edges, × diagonal
+  int singularSamples = 0;
+};
+
+GnurbsContinuity measureGnurbsContinuity(const G2GnurbsResult& result, int samplesPerEdge = 21);
+
+std::string gnurbsReportJson(const G2GnurbsResult& result, const GnurbsContinuity& continuity, const GnurbsBrep* brep,
+                             double seconds);
+
+}  // namespace holefill

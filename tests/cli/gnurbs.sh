@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# holefill gnurbs: bad cages and lists exit 1 with one clear line and write nothing; good cages
+# write a valid shell, the sidecar and a report whose continuity numbers meet the G² goals.
+set -u
+H=${HOLEFILL:?}
+T=$1
+PY=${PYTHON:-/usr/bin/python3}
+rm -rf "$T"; mkdir -p "$T"
+fail=0; pass=0
+ok() { pass=$((pass+1)); echo "ok   $1"; }
+bad() { fail=$((fail+1)); echo "FAIL $1"; }
+expect_error() {  # name, wanted text in the message, args...
+  local name=$1 want=$2; shift 2
+  "$H" gnurbs "$@" --out "$T/o.step" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ "$rc" = 1 ] && grep -q "^holefill: .*$want" "$T/err" && [ ! -e "$T/o.step" ] && [ ! -e "$T/o.faces.json" ]; then
+    ok "$name: $(head -1 "$T/err")"
+  else
+    bad "$name: rc=$rc, stderr: $(cat "$T/err")"
+  fi
+  rm -f "$T/o.step" "$T/o.faces.json"
+}
+"$H" samples "$T" >/dev/null || { echo "FAIL samples"; exit 1; }
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n' >"$T/tri.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3 4\n' >"$T/nan.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 9 9 9\nf 1 2 3 4\n' >"$T/isolated.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n# knot 1 2 0\n' >"$T/zero_knot.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nf 1 2 3 4\nf 1 2 6 5\n' >"$T/nonmanifold.obj"
+head -c 200 "$T/cage_valence5.obj" >"$T/truncated.obj"
+expect_error "missing file" "cannot open" "$T/none.obj"
+expect_error "not an obj" "use an .obj" "$T/cage_cube.stl"
+expect_error "triangle" "all quads" "$T/tri.obj"
+expect_error "NaN vertex" "not finite" "$T/nan.obj"
+expect_error "isolated vertex" "used by no quad" "$T/isolated.obj"
+expect_error "zero knot interval" "positive" "$T/zero_knot.obj"
+expect_error "non-manifold" "same direction" "$T/nonmanifold.obj"
+expect_error "truncated" "" "$T/truncated.obj"
+echo '[[1, 2], [1, 99]]' >"$T/sharp_bad.json"
+expect_error "sharp edge off the cage" "not a cage edge" "$T/cage_valence5.obj" --sharp "$T/sharp_bad.json"
+echo '[[1, 2]]' >"$T/sharp_ep.json"
+expect_error "sharp edge at an EP" "extraordinary point 1" "$T/cage_valence5.obj" --sharp "$T/sharp_ep.json"
+echo '[[2, 0, 0, 1]]' >"$T/anchor_regular.json"
+expect_error "anchor at a regular vertex" "anchor" "$T/cage_valence5.obj" --anchors "$T/anchor_regular.json"
+echo '[[1, 0, 0' >"$T/anchor_broken.json"
+expect_error "broken anchors json" "JSON" "$T/cage_valence5.obj" --anchors "$T/anchor_broken.json"
+expect_error "chained EPs without refinement" "Catmull-Clark" "$T/cage_cube.obj" --no-refine
+if "$H" gnurbs "$T/cage_valence5.obj" --out "$T/o.iges" >/dev/null 2>"$T/err"; then bad "iges output accepted"; else ok "iges output refused: $(cat "$T/err")"; fi
+
+# The cube: refined once, a closed valid shell of 96 faces, G² to round-off.
+if "$H" gnurbs "$T/cage_cube.obj" --out "$T/cube.step" --json >"$T/cube.json" 2>"$T/err"; then
+  "$PY" - "$T" <<'PY' && ok "cube: closed valid shell, sidecar, G2" || bad "cube report: $(cat "$T/cube.json")"
+import json, sys
+t = sys.argv[1]
+r = json.load(open(t + "/cube.json"))
+s = json.load(open(t + "/cube.faces.json"))
+assert r["refinements"] == 1 and "chain" in r["refinement_reason"], r
+assert r["brep"] == {"faces": 96, "free_edges": 0, "closed": True, "valid": True}, r["brep"]
+c = r["continuity"]
+assert c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6 and c["g1_elsewhere"] < 1e-8 and c["g2_elsewhere"] < 1e-6, c
+assert len(s["faces"]) == 96 and s["faces"][5] == {"name": "Face6", "control_face": 1, "sub_patch": 1, "input_face": 0}, s["faces"][5]
+PY
+else bad "cube: $(cat "$T/err")"; fi
+# A crease through the 1-ring's border (cage vertices 2-3-4 on spoke line 0, then 2-17-18-19):
+# one Catmull-Clark step moves it off the 1-ring and the spokes are G² again; the creases end on
+# the cage boundary, so no dart warning. A crease ending inside is a dart: exit 3 with a warning.
+cp "$T/cage_valence5.obj" "$T/sharp.obj"
+printf '# sharp 2 3\n# sharp 3 4\n# sharp 2 17\n# sharp 17 18\n# sharp 18 19\n' >>"$T/sharp.obj"
+if "$H" gnurbs "$T/sharp.obj" --out "$T/sharp.brep" --json >"$T/sharp.json" 2>"$T/err"; then
+  "$PY" - "$T" <<'PY' && ok "crease at the 1-ring: refined, G2 at the EP" || bad "sharp report: $(cat "$T/sharp.json")"
+import json, sys
+r = json.load(open(sys.argv[1] + "/sharp.json"))
+c = r["continuity"]
+assert r["refinements"] == 1 and "touches the 1-ring" in r["refinement_reason"], r
+assert c["sharp_edges"] == 10 and c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6, c
+assert r["brep"]["valid"] and not r["warnings"], r
+PY
+else bad "sharp: $(cat "$T/err")"; fi
+cp "$T/cage_valence5.obj" "$T/dart.obj"
+printf '# sharp 3 4\n' >>"$T/dart.obj"
+"$H" gnurbs "$T/dart.obj" --out "$T/dart.brep" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 3 ] && grep -q "dart" "$T/err" && [ -s "$T/dart.brep" ]; then ok "dart: written, exit 3, $(cat "$T/err")"; else bad "dart: rc=$rc $(cat "$T/err")"; fi
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
