@@ -291,15 +291,24 @@ std::string refinementNeed(const QuadCage& cage, const CageTopology& topo) {
   return "";
 }
 
-// Vertices inside the cage where exactly one sharp edge ends (a dart): the extraction
-// interpolates them, so the surface around is only C0 there.
-std::vector<int> darts(const QuadCage& cage, const CageTopology& topo) {
-  std::vector<int> out;
+// Where creases leave the surface short of G1 around a vertex inside the cage: a dart (one
+// sharp edge ends there; the extraction interpolates the vertex, so only C0 around it) and a
+// turn (two sharp edges not opposite in the fan: the faces on the outer side meet a corner of
+// the crease that no bicubic B-spline rule makes smooth; measured G1 9e-3 rad there).
+std::vector<std::string> creaseWarnings(const QuadCage& cage, const CageTopology& topo) {
+  std::vector<std::string> out;
   for (int v = 0; v < topo.vertexCount(); ++v) {
     if (topo.onBoundary(v)) continue;
-    int sharp = 0;
-    for (int w : topo.spokes(v)) sharp += cage.isSharp(v, w) ? 1 : 0;
-    if (sharp == 1) out.push_back(v);
+    const auto& sp = topo.spokes(v);
+    std::vector<int> at;
+    for (int i = 0; i < static_cast<int>(sp.size()); ++i)
+      if (cage.isSharp(v, sp[i])) at.push_back(i);
+    if (at.size() == 1)
+      out.push_back("a sharp edge ends inside the cage at " + cage.vertexName(v) +
+                    " (a dart): the surface is only C0 around that vertex; end creases at the cage boundary or at other creases");
+    else if (at.size() == 2 && 2 * (at[1] - at[0]) != static_cast<int>(sp.size()))
+      out.push_back("the crease turns at " + cage.vertexName(v) +
+                    ": the faces on its outer side meet only about G1 there (1e-2 rad); run creases straight through regular vertices");
   }
   return out;
 }
@@ -337,9 +346,7 @@ G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& optio
   std::vector<bool> isEP(topo.vertexCount(), false);
   for (int v : eps) isEP[v] = true;
 
-  for (int v : darts(cage, topo))
-    result.warnings.push_back("a sharp edge ends inside the cage at " + cage.vertexName(v) +
-                              " (a dart): the surface is only C0 around that vertex; end creases at the cage boundary or at other creases");
+  for (std::string& w : creaseWarnings(cage, topo)) result.warnings.push_back(std::move(w));
   // Clusters: single EPs and pairs joined by an edge (refinementNeed ruled out the rest).
   UnionFind uf(topo.vertexCount());
   for (int v : eps)

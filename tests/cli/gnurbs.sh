@@ -59,18 +59,20 @@ assert c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6 and c["g1_elsewhere"] < 1
 assert len(s["faces"]) == 96 and s["faces"][5] == {"name": "Face6", "control_face": 1, "sub_patch": 1, "input_face": 0}, s["faces"][5]
 PY
 else bad "cube: $(cat "$T/err")"; fi
-# A crease through the 1-ring's border (cage vertices 2-3-4 on spoke line 0, then 2-17-18-19):
-# one Catmull-Clark step moves it off the 1-ring and the spokes are G² again; the creases end on
-# the cage boundary, so no dart warning. A crease ending inside is a dart: exit 3 with a warning.
+# A straight crease across the 1-ring's border (cage vertices 19-18-17-2-53-56-59, boundary to
+# boundary through spoke end 2): one Catmull-Clark step moves it off the 1-ring, and the
+# surface is G² across every other edge. A crease ending inside is a dart, one turning at a
+# regular vertex a turn: both are written with exit 3 and a warning.
 cp "$T/cage_valence5.obj" "$T/sharp.obj"
-printf '# sharp 2 3\n# sharp 3 4\n# sharp 2 17\n# sharp 17 18\n# sharp 18 19\n' >>"$T/sharp.obj"
+printf '# sharp 19 18\n# sharp 18 17\n# sharp 17 2\n# sharp 2 53\n# sharp 53 56\n# sharp 56 59\n' >>"$T/sharp.obj"
 if "$H" gnurbs "$T/sharp.obj" --out "$T/sharp.brep" --json >"$T/sharp.json" 2>"$T/err"; then
   "$PY" - "$T" <<'PY' && ok "crease at the 1-ring: refined, G2 at the EP" || bad "sharp report: $(cat "$T/sharp.json")"
 import json, sys
 r = json.load(open(sys.argv[1] + "/sharp.json"))
 c = r["continuity"]
 assert r["refinements"] == 1 and "touches the 1-ring" in r["refinement_reason"], r
-assert c["sharp_edges"] == 10 and c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6, c
+assert c["sharp_edges"] == 12 and c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6, c
+assert c["g1_elsewhere"] < 1e-8 and c["g2_elsewhere"] < 1e-6 and c["singular_samples"] == 0, c
 assert r["brep"]["valid"] and not r["warnings"], r
 PY
 else bad "sharp: $(cat "$T/err")"; fi
@@ -78,5 +80,9 @@ cp "$T/cage_valence5.obj" "$T/dart.obj"
 printf '# sharp 3 4\n' >>"$T/dart.obj"
 "$H" gnurbs "$T/dart.obj" --out "$T/dart.brep" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 3 ] && grep -q "dart" "$T/err" && [ -s "$T/dart.brep" ]; then ok "dart: written, exit 3, $(cat "$T/err")"; else bad "dart: rc=$rc $(cat "$T/err")"; fi
+cp "$T/cage_valence5.obj" "$T/turn.obj"
+printf '# sharp 2 3\n# sharp 3 4\n# sharp 2 17\n# sharp 17 18\n# sharp 18 19\n' >>"$T/turn.obj"
+"$H" gnurbs "$T/turn.obj" --out "$T/turn.brep" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 3 ] && grep -q "crease turns at vertex 2" "$T/err"; then ok "turn: written, exit 3, $(cat "$T/err")"; else bad "turn: rc=$rc $(cat "$T/err")"; fi
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
