@@ -113,15 +113,16 @@ struct ClusterSolve {
         k.dS = cage.knot(v, w);
         k.dA = cage.knot(v, sp[(i + 1) % n]);
         k.dB = cage.knot(v, sp[(i + n - 1) % n]);
+        auto rhoAt = [&](int valence) {
+          return std::isnan(options.rho) || valence == 3 ? connectionRho(valence) : options.rho;
+        };
         k.b0 = eigenPolyhedronB(n);
-        k.r = options.rho;
+        k.r = rhoAt(n);
         if (isClusterEP(w)) {
           k.epAtBothEnds = true;
           k.b1 = eigenPolyhedronB(topo.valence(w));
-          k.r1 = options.rho;
-          if (topo.valence(w) == 3) k.r1 = valence3Rho(isolatedBetaSlope(k.b1));
+          k.r1 = rhoAt(topo.valence(w));
         }
-        if (n == 3) k.r = valence3Rho(isolatedBetaSlope(k.b0));
         appendSpokeConditions(k, A, B, conditions);
       }
     }

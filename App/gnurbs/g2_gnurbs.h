@@ -18,12 +18,12 @@
 // parallel rows) is not C² across a spoke even at its regular end, the gray rows cannot meet the
 // spoke conditions there, and the result carries a warning with the residual. Adjacent EPs share one such problem (sec. 3.2.2) rather
 // than the paper's two decoupled ones; a pair is at most 2N−2 faces. Their shared spoke uses a
-// connection of our own (spoke_conditions.h): G² holds exactly, but the tangent star at an EP
-// next to another can come out anisotropic where the guidance's is round (σ₂/σ₁ 0.08 against
-// 0.88 measured at a valence-3 EP next to a valence-6 one); a Catmull–Clark step separates
-// such EPs when that matters.
+// connection of our own (spoke_conditions.h): G² holds exactly; the tangent star at an EP next
+// to another is less round than the guidance's by up to a factor 0.55 (σ₂/σ₁, measured at a
+// valence-3 EP next to a valence-5 one); a Catmull–Clark step separates such EPs when that matters.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -35,7 +35,9 @@
 namespace holefill {
 
 struct G2GnurbsOptions {
-  double rho = 1;               // r_i of the connection function ρ (the paper takes 1)
+  // r_i of the connection function ρ; NaN: per valence (connectionRho, spoke_conditions.h).
+  // Any other value applies at every EP but valence 3, whose r is forced (valence3Rho).
+  double rho = std::nan("");
   // Cages whose EPs are too close (a face with two EPs not on one edge, three EPs joined by
   // edges) or with a sharp edge touching an EP's 1-ring get one Catmull–Clark step first
   // (catmull_clark.h); false: throw instead.

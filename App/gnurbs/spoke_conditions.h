@@ -78,6 +78,16 @@ struct SpokeConnection {
   double slope0 = std::nan(""), slope1 = std::nan("");
 };
 
+// ρ's scale r at an EP of this valence. The paper takes r = 1; that is forced otherwise at
+// valence 3 (valence3Rho) and folds the surface at valence 7 and above: measured on the planar
+// regular N-sided polar cage, whose surface should stay an injective map with the regular
+// star's angle sin(2π/N) as its smallest, r = 1 keeps that only up to valence 5 (valence 6:
+// 0.77 against 0.87; valence 7-10 fold), and for N ≥ 6 the r that keep it form a window that
+// narrows with N (N = 6: [-6.75, -4], 7: [-6, -3.75], 8: [-5.5, -4],
+// 10: [-5.25, -4.75], 12: [-5.55, -5], 16: [-5.7, -5.45], 20: ≤ -5.65). The table takes the
+// window's middle up to valence 16 and -5.7 beyond (checked at 20 only).
+double connectionRho(int valence);
+
 // The slope β'(0) per half-spoke parameter that every spoke of a valence-3 EP with a regular
 // far end has (β = b(1 − σ)³), and ρ(0) at a valence-3 EP whose spokes have slope β'(0).
 inline double isolatedBetaSlope(double b) { return -3 * b; }

@@ -3,6 +3,10 @@
 // once, in the core), errors leave as HoleFillApp.HoleFillError. OCCT and core
 // exceptions are caught here so FreeCAD never goes down with a bad input.
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <array>
+#include <chrono>
+#include <map>
+#include <tuple>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -18,6 +22,10 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "gnurbs/cage_io.h"
+#include "gnurbs/gnurbs_brep.h"
+#include "gnurbs/gnurbs_report.h"
+#include "gnurbs/sample_cages.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
 #include "mesh/fill_metrics.h"
@@ -325,5 +333,52 @@ PYBIND11_MODULE(HoleFillApp, m) {
     return guarded([&] { return py::bytes(shapeToBrepString(samples::ccExtraordinaryHole(valence, rings, bend, 10.0, jitter, seed))); });
   }, py::arg("valence"), py::arg("rings") = 4, py::arg("bend") = 1.0, py::arg("jitter") = 0.0, py::arg("seed") = 0u,
      "BREP of a Catmull-Clark extraordinary-point hole ring (bicubic patches around a valence-N hole).");
+  m.def("gnurbsSurface", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixXi& quads,
+                            const std::vector<std::tuple<int, int, double>>& knots, const std::vector<std::pair<int, int>>& sharpEdges,
+                            const std::map<int, std::array<double, 3>>& anchors, bool refine, int numberBase) {
+    return guarded([&] {
+      if (quads.cols() != 4) throw Error("quads must have 4 columns (one row per quad), got " + std::to_string(quads.cols()));
+      QuadCage cage;
+      cage.vertices = vertices;
+      cage.quads = quads;
+      cage.numberBase = numberBase;
+      for (const auto& [a, b, d] : knots) cage.setKnot(a, b, d);
+      for (const auto& [a, b] : sharpEdges) cage.setSharp(a, b);
+      for (const auto& [v, p] : anchors) cage.anchors[v] = Eigen::Vector3d(p[0], p[1], p[2]);
+      G2GnurbsOptions o;
+      o.refineWhenNeeded = refine;
+      G2GnurbsResult r;
+      GnurbsBrep b;
+      GnurbsContinuity c;
+      double seconds = 0;
+      {
+        py::gil_scoped_release release;
+        const auto t0 = std::chrono::steady_clock::now();
+        r = buildG2Gnurbs(cage, o);
+        b = gnurbsToBrep(r);
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        c = measureGnurbsContinuity(r);
+      }
+      return py::make_tuple(py::bytes(shapeToBrepString(b.shape)), b.sidecarJson, gnurbsReportJson(r, c, &b, seconds));
+    });
+  }, py::arg("vertices"), py::arg("quads"), py::arg("knots") = std::vector<std::tuple<int, int, double>>{},
+     py::arg("sharpEdges") = std::vector<std::pair<int, int>>{}, py::arg("anchors") = std::map<int, std::array<double, 3>>{},
+     py::arg("refine") = true, py::arg("numberBase") = 0,
+     "G² G-NURBS surface over a quad cage (0-based indices): (BREP text of the shell, faces sidecar JSON, report JSON).");
+  m.def("readCage", [](const std::string& path) {
+    return guarded([&] {
+      const QuadCage c = readCage(path);
+      std::vector<std::tuple<int, int, double>> knots;
+      for (const auto& [key, d] : c.knots) knots.emplace_back(static_cast<int>(key & 0xffffffffu), static_cast<int>(key >> 32), d);
+      std::vector<std::pair<int, int>> sharp;
+      for (std::uint64_t key : c.sharp) sharp.emplace_back(static_cast<int>(key & 0xffffffffu), static_cast<int>(key >> 32));
+      std::map<int, std::array<double, 3>> anchors;
+      for (const auto& [v, a] : c.anchors) anchors[v] = {a.x(), a.y(), a.z()};
+      return py::make_tuple(c.vertices, Eigen::MatrixXi(c.quads), knots, sharp, anchors);
+    });
+  }, py::arg("path"), "A quad cage OBJ (with # sharp/# knot/# anchor lines) as 0-based (vertices, quads, knots, sharp, anchors).");
+  m.def("sampleCageNames", &cages::sampleCageNames);
+  m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
+        py::arg("name"), "OBJ text of a bundled sample cage.");
   m.attr("__version__") = "0.1.0";
 }

@@ -9,6 +9,7 @@ Macro-friendly API (camelCase like FreeCAD's own):
     fill = HoleFill.makeFill(obj, ["Edge3"], method="auto")     # parametric document object
     HoleFill.renderImage(fill.Shape, "/tmp/fill.png", mode="zebra")  # headless inspection picture
     filled, report = HoleFill.fillMeshHoles(meshObj.Mesh)        # triangle-mesh holes (meshfill.py)
+    shell, report = HoleFill.gnurbsSurface(vertices, quads)      # G² surface over a quad cage (gnurbs.py)
 
 Shapes cross into the C++ core (module HoleFillApp) as BREP text and never come
 back modified: every result is a new shape. Reports are plain dicts with the
@@ -25,7 +26,8 @@ CONTINUITIES = ("G0", "G1", "G2")
 
 __all__ = ["findHoles", "fillHole", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
-           "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole"]
+           "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
+           "sampleCage", "makeGnurbs"]
 
 
 class Hole(dict):
@@ -172,3 +174,4 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402
 from HoleFill.meshfill import MeshHole, fillMeshHoles, makeMeshFill, meshHoles, readMesh, writeMesh  # noqa: E402
+from HoleFill.gnurbs import cageFromShape, gnurbsSurface, makeGnurbs, readCage, sampleCage  # noqa: E402

@@ -1,0 +1,208 @@
+"""G² G-NURBS surfaces over quad cages (g2-gnurbs paper): a curvature-continuous spline surface
+whose faces follow a quad control mesh with extraordinary points, as a B-rep shell.
+
+    import HoleFill
+    shell, report = HoleFill.gnurbsSurface(vertices, quads, sharpEdges=[(3, 4)])
+    print(report["continuity"]["g2_spokes"], report["faces"][0])   # Face1 -> control face, sub-patch
+    cage = HoleFill.cageFromShape(obj.Shape)                        # a Part shell of quads as a cage
+    feature = HoleFill.makeGnurbs(obj)                              # parametric, follows the cage
+
+Indices are 0-based here (NumPy rows); OBJ cage files are 1-based, as OBJ is. Knot intervals
+are (i, j, d) triples, sharp edges (i, j) pairs, anchors {vertex: (x, y, z)} at extraordinary
+points. The cage is never modified. Errors raise HoleFillError naming the vertex or quad.
+"""
+import json
+
+import HoleFillApp
+
+__all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature"]
+
+
+def _shape(brep):
+    import Part
+    s = Part.Shape()
+    s.importBrepFromString(brep.decode() if isinstance(brep, bytes) else brep)
+    return s
+
+
+def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refine=True):
+    """The G² surface over the cage: (Part.Shape shell, report dict). The report holds the
+    construction's diagnostics (extraordinary_points, refinements and why, constraint_residual,
+    warnings), the continuity reached (g1/g2 on spoke edges and elsewhere), the B-rep checks, and
+    "faces": for Face1, Face2, ... the control face and sub-patch (-1: the face's bicubic patch).
+    refine=False refuses cages that need a Catmull-Clark step instead of refining them."""
+    import numpy as np
+    v = np.asarray(vertices, dtype=float).reshape(-1, 3)
+    q = np.asarray(quads, dtype=np.int32)
+    if q.ndim != 2 or q.shape[1] != 4:
+        raise HoleFillApp.HoleFillError("quads must be rows of 4 vertex indices, got shape %s" % (q.shape,))
+    k = [(int(a), int(b), float(d)) for a, b, d in (knots or [])]
+    s = [(int(a), int(b)) for a, b in sharpEdges]
+    anc = {int(i): tuple(float(c) for c in p) for i, p in (anchors or {}).items()}
+    brep, sidecar, report = HoleFillApp.gnurbsSurface(v, q, k, s, anc, bool(refine))
+    rep = json.loads(report)
+    rep["faces"] = json.loads(sidecar)["faces"]
+    return _shape(brep), rep
+
+
+def readCage(path):
+    """A quad cage OBJ as a dict (vertices, quads, knots, sharpEdges, anchors), 0-based."""
+    v, q, k, s, a = HoleFillApp.readCage(path)
+    return {"vertices": v, "quads": q, "knots": k, "sharpEdges": s, "anchors": {i: tuple(p) for i, p in a.items()}}
+
+
+def sampleCage(name):
+    """One of the bundled cages (HoleFillApp.sampleCageNames()) as readCage gives it."""
+    import os
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, name + ".obj")
+        with open(path, "w") as f:
+            f.write(HoleFillApp.sampleCageObj(name))
+        return readCage(path)
+
+
+def cageFromShape(shape, tolerance=None):
+    """A Part shape made of quadrilateral faces (a shell, compound or solid, e.g. from an imported
+    OBJ or a Draft/Part construction) as a cage dict: one cage vertex per distinct shape vertex,
+    one quad per face, its corners in the order of the face's outer wire as the face is oriented.
+    Faces with other than 4 vertices are refused by name."""
+    if shape is None or shape.isNull() or not shape.Faces:
+        raise HoleFillApp.HoleFillError("the shape has no faces: select a shell or compound of quadrilateral faces")
+    tol = tolerance if tolerance is not None else 1e-7 * max(shape.BoundBox.DiagonalLength, 1e-12)
+    points, index = [], {}
+
+    def vid(p):
+        key = (round(p.x / tol), round(p.y / tol), round(p.z / tol))
+        if key not in index:
+            index[key] = len(points)
+            points.append((p.x, p.y, p.z))
+        return index[key]
+
+    quads = []
+    for n, face in enumerate(shape.Faces, 1):
+        wire = face.OuterWire
+        verts = [v.Point for v in wire.OrderedVertexes]
+        if len(verts) != 4:
+            raise HoleFillApp.HoleFillError("Face%d has %d corners; a G-NURBS cage must be all quads" % (n, len(verts)))
+        ids = [vid(p) for p in verts]
+        # The outer wire runs anticlockwise about the face's normal when the face is FORWARD.
+        if face.Orientation == "Reversed":
+            ids.reverse()
+        quads.append(ids)
+    # Orient every quad like the first one, across shared edges (a cage from an unoriented compound).
+    quads = _orientConsistently(quads)
+    return {"vertices": points, "quads": quads, "knots": [], "sharpEdges": [], "anchors": {}}
+
+
+def _orientConsistently(quads):
+    from collections import deque
+    owner = {}
+    for f, q in enumerate(quads):
+        for k in range(4):
+            owner.setdefault(frozenset((q[k], q[(k + 1) % 4])), []).append(f)
+    seen = [False] * len(quads)
+    out = [list(q) for q in quads]
+    for start in range(len(quads)):
+        if seen[start]:
+            continue
+        seen[start] = True
+        todo = deque([start])
+        while todo:
+            f = todo.popleft()
+            q = out[f]
+            for k in range(4):
+                a, b = q[k], q[(k + 1) % 4]
+                for g in owner[frozenset((a, b))]:
+                    if g == f or seen[g]:
+                        continue
+                    r = out[g]
+                    # A consistently oriented neighbour runs the shared edge the other way (b -> a).
+                    if any(r[m] == a and r[(m + 1) % 4] == b for m in range(4)):
+                        r.reverse()
+                    seen[g] = True
+                    todo.append(g)
+    return out
+
+
+class GnurbsFeature:
+    """A Part::FeaturePython whose Shape is the G² surface over its Source's quad faces, rebuilt
+    whenever the source changes. SharpEdges and Anchors refer to cage vertices (0-based) as
+    cageFromShape numbers them."""
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setupProperties(obj)
+
+    def setupProperties(self, obj):
+        props = obj.PropertiesList
+
+        def add(kind, name, group, doc):
+            if name not in props:
+                obj.addProperty(kind, name, group, doc)
+
+        add("App::PropertyLink", "Source", "G-NURBS", "Object whose faces are the quad cage")
+        add("App::PropertyStringList", "SharpEdges", "G-NURBS", "Crease edges as 'i-j' (cage vertices, 0-based)")
+        add("App::PropertyStringList", "Anchors", "G-NURBS", "Anchors as 'i: x y z' at sharp extraordinary points")
+        add("App::PropertyBool", "Refine", "G-NURBS", "Refine the cage once when its EPs are too close")
+        for name, doc in (("Report", "construction and continuity report (JSON)"), ("Status", "ok, or the warnings")):
+            add("App::PropertyString", name, "Report", doc)
+            obj.setEditorMode(name, 1)
+        for name, doc in (("G1", "max normal angle across spoke edges (rad)"), ("G2", "max relative curvature jump across spoke edges")):
+            add("App::PropertyFloat", name, "Report", doc)
+            obj.setEditorMode(name, 1)
+
+    def onDocumentRestored(self, obj):
+        self.setupProperties(obj)
+
+    def execute(self, obj):
+        if obj.Source is None or not hasattr(obj.Source, "Shape"):
+            raise HoleFillApp.HoleFillError("G-NURBS surface has no source object with a shape")
+        cage = cageFromShape(obj.Source.Shape)
+        sharp = [tuple(int(x) for x in e.split("-")) for e in obj.SharpEdges]
+        anchors = {}
+        for a in obj.Anchors:
+            head, rest = a.split(":")
+            anchors[int(head)] = tuple(float(x) for x in rest.split())
+        shell, report = gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=sharp, anchors=anchors, refine=obj.Refine)
+        obj.Shape = shell
+        obj.G1 = report["continuity"]["g1_spokes"]
+        obj.G2 = report["continuity"]["g2_spokes"]
+        obj.Status = "; ".join(report["warnings"]) or "ok"
+        obj.Report = json.dumps(report)
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs"):
+    """A parametric G-NURBS surface over `source` (a document object with quad faces) in one undo
+    transaction; the source is only read. Returns the new object, or raises with nothing added."""
+    import FreeCAD
+    if source is None or not hasattr(source, "Shape"):
+        raise HoleFillApp.HoleFillError("makeGnurbs needs a document object with a shape as source")
+    doc = source.Document
+    doc.openTransaction("G-NURBS surface")
+    obj = None
+    try:
+        obj = doc.addObject("Part::FeaturePython", name)
+        GnurbsFeature(obj)
+        obj.Source = source
+        obj.SharpEdges = ["%d-%d" % (int(a), int(b)) for a, b in sharpEdges]
+        obj.Anchors = ["%d: %r %r %r" % (int(i), float(p[0]), float(p[1]), float(p[2])) for i, p in (anchors or {}).items()]
+        obj.Refine = bool(refine)
+        if FreeCAD.GuiUp:
+            obj.ViewObject.Proxy = 0
+        doc.recompute()
+        if not obj.isValid():
+            raise HoleFillApp.HoleFillError("the G-NURBS surface failed: %s" % (obj.getStatusString() or "see the report view"))
+    except Exception:
+        if obj is not None and doc.getObject(obj.Name) is not None:
+            doc.removeObject(obj.Name)
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+    return obj
