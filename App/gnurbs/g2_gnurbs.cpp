@@ -193,46 +193,67 @@ struct ClusterSolve {
         if (var[g] >= 0) prob.M(r, var[g]) += w;
         else prob.c.row(r) -= w * fixedValue(g);
       }
-    prob.steps = steps;
-    prob.H.assign(4, Eigen::MatrixXd::Zero(nv, nv));
-    prob.g.assign(4, Eigen::MatrixXd::Zero(nv, 3));
-    // ½‖Σ c_k y_k − target‖² into a step's objective; fixed y_k move to the target.
-    auto addTerm = [&](int s, const std::vector<std::pair<int, double>>& terms, Eigen::RowVector3d target) {
-      for (const auto& [g, w] : terms)
-        if (var[g] < 0) target -= w * fixedValue(g);
-      for (const auto& [gi, wi] : terms) {
-        if (var[gi] < 0) continue;
-        prob.g[s].row(var[gi]) += wi * target;
-        for (const auto& [gj, wj] : terms)
-          if (var[gj] >= 0) prob.H[s](var[gi], var[gj]) += wi * wj;
-      }
-    };
-    auto stepOfGid = [&](int g) { return var[g] < 0 ? -1 : classStep[uf.find(g)]; };
-    for (int lf = 0; lf < nl; ++lf)
-      for (int a = 0; a < kGrid; ++a)
-        for (int b = 0; b < kGrid; ++b) {
-          const int g = gid(lf, a * kGrid + b), s = stepOfGid(g);
-          if (s < 0 || s == 3) continue;
-          addTerm(s, {{g, 1.0}}, guide.row(g));  // eq. (21): values …
-          for (const int h : {a + 1 < kGrid ? gid(lf, (a + 1) * kGrid + b) : -1, b + 1 < kGrid ? gid(lf, a * kGrid + b + 1) : -1,
-                              a > 0 ? gid(lf, (a - 1) * kGrid + b) : -1, b > 0 ? gid(lf, a * kGrid + b - 1) : -1}) {
-            // … and differences to grid neighbours that are fixed or solved no later.
-            if (h < 0 || stepOfGid(h) > s || (stepOfGid(h) == s && h < g)) continue;
-            addTerm(s, {{g, 1.0}, {h, -1.0}}, guide.row(g) - guide.row(h));
+    const Eigen::MatrixXd& E = thinPlateOfFace();
+    if (options.solve == G2GnurbsOptions::Solve::Fair) {
+      // One step: the thin-plate energy of the change from the guidance, over every face, plus
+      // a small pull to the guidance's values (the energy ignores affine changes).
+      prob.steps = {{}};
+      for (int v = 0; v < nv; ++v) prob.steps[0].push_back(v);
+      prob.H.assign(1, Eigen::MatrixXd::Zero(nv, nv));
+      prob.g.assign(1, Eigen::MatrixXd::Zero(nv, 3));
+      for (int lf = 0; lf < nl; ++lf)
+        for (int i = 0; i < kFacePoints; ++i) {
+          const int gi = gid(lf, i);
+          if (var[gi] < 0) continue;
+          prob.H[0](var[gi], var[gi]) += options.fairPull;
+          prob.g[0].row(var[gi]) += options.fairPull * guide.row(gi);
+          for (int j = 0; j < kFacePoints; ++j) {
+            const int gj = gid(lf, j);
+            prob.g[0].row(var[gi]) += E(i, j) * guide.row(gj);
+            if (var[gj] >= 0) prob.H[0](var[gi], var[gj]) += E(i, j);
+            else prob.g[0].row(var[gi]) -= E(i, j) * fixedValue(gj);
           }
         }
-    const Eigen::MatrixXd& E = thinPlateOfFace();
-    for (int lf = 0; lf < nl; ++lf)
-      for (int i = 0; i < kFacePoints; ++i) {
-        const int gi = gid(lf, i);
-        if (var[gi] < 0) continue;
-        for (int j = 0; j < kFacePoints; ++j) {
-          const int gj = gid(lf, j);
-          if (var[gj] >= 0) prob.H[3](var[gi], var[gj]) += E(i, j);
-          else prob.g[3].row(var[gi]) -= E(i, j) * fixedValue(gj);
+    } else {
+      prob.steps = steps;
+      prob.H.assign(4, Eigen::MatrixXd::Zero(nv, nv));
+      prob.g.assign(4, Eigen::MatrixXd::Zero(nv, 3));
+      // ½‖Σ c_k y_k − target‖² into a step's objective; fixed y_k move to the target.
+      auto addTerm = [&](int s, const std::vector<std::pair<int, double>>& terms, Eigen::RowVector3d target) {
+        for (const auto& [g, w] : terms)
+          if (var[g] < 0) target -= w * fixedValue(g);
+        for (const auto& [gi, wi] : terms) {
+          if (var[gi] < 0) continue;
+          prob.g[s].row(var[gi]) += wi * target;
+          for (const auto& [gj, wj] : terms)
+            if (var[gj] >= 0) prob.H[s](var[gi], var[gj]) += wi * wj;
         }
-      }
-
+      };
+      auto stepOfGid = [&](int g) { return var[g] < 0 ? -1 : classStep[uf.find(g)]; };
+      for (int lf = 0; lf < nl; ++lf)
+        for (int a = 0; a < kGrid; ++a)
+          for (int b = 0; b < kGrid; ++b) {
+            const int g = gid(lf, a * kGrid + b), s = stepOfGid(g);
+            if (s < 0 || s == 3) continue;
+            addTerm(s, {{g, 1.0}}, guide.row(g));  // eq. (21): values …
+            for (const int h : {a + 1 < kGrid ? gid(lf, (a + 1) * kGrid + b) : -1, b + 1 < kGrid ? gid(lf, a * kGrid + b + 1) : -1,
+                                a > 0 ? gid(lf, (a - 1) * kGrid + b) : -1, b > 0 ? gid(lf, a * kGrid + b - 1) : -1}) {
+              // … and differences to grid neighbours that are fixed or solved no later.
+              if (h < 0 || stepOfGid(h) > s || (stepOfGid(h) == s && h < g)) continue;
+              addTerm(s, {{g, 1.0}, {h, -1.0}}, guide.row(g) - guide.row(h));
+            }
+          }
+      for (int lf = 0; lf < nl; ++lf)  // step 4: the paper's thin-plate energy of the surface itself
+        for (int i = 0; i < kFacePoints; ++i) {
+          const int gi = gid(lf, i);
+          if (var[gi] < 0) continue;
+          for (int j = 0; j < kFacePoints; ++j) {
+            const int gj = gid(lf, j);
+            if (var[gj] >= 0) prob.H[3](var[gi], var[gj]) += E(i, j);
+            else prob.g[3].row(var[gi]) -= E(i, j) * fixedValue(gj);
+          }
+        }
+    }
     const StepwiseResult sol = solveStepwise(prob, options.solver);
     const double size = std::max(1.0, guide.cwiseAbs().maxCoeff());
     if (sol.stepInfeasibility > 1e-9 * size) {

@@ -2,25 +2,28 @@
 // patch on every face outside EP 1-rings, and on each face of an EP 1-ring a 2×2 grid of
 // biquintic patches (the guidance patch elevated and split, sec. 2) whose coefficients are
 // re-solved so that every spoke edge is G² (spoke_conditions.h) and the face stays C² inside
-// and C² to its regular neighbours. The solve is the paper's stepwise least squares (sec. 4.1)
-// over each EP, or each pair of EPs joined by an edge, with its 1-ring faces:
+// and C² to its regular neighbours. The solve covers each EP, or each pair of EPs joined by an
+// edge, with its 1-ring faces. The three coefficient rows along every face edge that is not a
+// spoke stay the guidance's ("gray"), which is what keeps the join to regular patches C². The
+// other coefficients are chosen under the exact constraints either by our fair solve (the
+// default, see G2GnurbsOptions) or by the paper's stepwise least squares (sec. 4.1):
 //   1. red/green/blue: the spoke rows 0-1 of the EP sub-patches and row 2 up to column 2, for
 //      all spokes jointly, nearest to the guidance in values and differences (eq. (21));
 //   2. black: columns 6-7 of the spoke rows beyond the EP sub-patch (fixed by C², eq. (11));
 //   3. yellow: row 2, columns 3-5 (eq. (22));
 //   4. the rest of each face by thin-plate energy under the C² conditions between its
 //      sub-patches (sec. 4.1.3).
-// The three coefficient rows along every face edge that is not a spoke stay the guidance's
-// ("gray"), which is what keeps the join to regular patches C². Each step satisfies the
-// projections of all constraints that the later steps need (stepwise_least_squares.h), so the
-// conditions hold to solver round-off. Knot intervals may vary freely except on an EP's own
-// spokes: where those differ, the bicubic extraction (whose face points blend the intervals of
-// parallel rows) is not C² across a spoke even at its regular end, the gray rows cannot meet the
-// spoke conditions there, and the result carries a warning with the residual. Adjacent EPs share one such problem (sec. 3.2.2) rather
-// than the paper's two decoupled ones; a pair is at most 2N−2 faces. Their shared spoke uses a
+// Each step satisfies the projections of all constraints that the later steps need
+// (stepwise_least_squares.h), so the conditions hold to solver round-off either way.
+// Knot intervals may vary freely except on an EP's own spokes: where those differ, the bicubic
+// extraction (whose face points blend the intervals of parallel rows) is not C² across a spoke
+// even at its regular end, the gray rows cannot meet the spoke conditions there, and the result
+// carries a warning with the residual. Adjacent EPs share one problem (sec. 3.2.2) rather than
+// the paper's two decoupled ones; a pair is at most 2N−2 faces. Their shared spoke uses a
 // connection of our own (spoke_conditions.h): G² holds exactly; the tangent star at an EP next
-// to another is less round than the guidance's by up to a factor 0.55 (σ₂/σ₁, measured at a
-// valence-3 EP next to a valence-5 one); a Catmull–Clark step separates such EPs when that matters.
+// to another is less round than the guidance's (σ₂/σ₁ 0.29 of the guidance's 0.99 at a valence-3
+// EP next to a valence-5 one with the fair solve, 0.55 with the stepwise one); a Catmull–Clark
+// step separates such EPs when that matters.
 #pragma once
 
 #include <cmath>
@@ -35,6 +38,17 @@
 namespace holefill {
 
 struct G2GnurbsOptions {
+  // How the free coefficients of an EP's 1-ring are chosen, under the same exact constraints:
+  //   Fair (default): one solve minimising the thin-plate energy of the change from the
+  //     guidance surface over all 1-ring faces. Measured against Stepwise on the sample polar
+  //     cages: max |mean curvature| in the 1-ring 0.48 against 1.42 at valence 8 and 0.25
+  //     against 0.75 at valence 5; the stepwise red/green/blue fit freezes the low-degree EP half
+  //     of each spoke before the rest is seen and leaves a curvature dipole just past the
+  //     spoke's middle. Tangent stars at isolated EPs are the guidance's in both.
+  //   Stepwise: the paper's sec. 4.1 steps as described above.
+  enum class Solve { Fair, Stepwise };
+  Solve solve = Solve::Fair;
+  double fairPull = 1e-3;       // Fair: weight of the pull to the guidance's values
   // r_i of the connection function ρ; NaN: per valence (connectionRho, spoke_conditions.h).
   // Any other value applies at every EP but valence 3, whose r is forced (valence3Rho).
   double rho = std::nan("");

@@ -184,8 +184,8 @@ TEST(G2Gnurbs, TwoAdjacentEPsAreG2AcrossEveryEdge) {
     EXPECT_LT(w.g1, 1e-8);
     EXPECT_LT(w.g2, 1e-6);
     EXPECT_EQ(w.singular, 0);
-    // Measured 0.55 (the valence-3 EP of 3+5) to 1.08 of the guidance's anisotropy.
-    for (int v : {0, 1}) expectTangentPlaneAt(r, v, 0.5);
+    // Measured 0.29 (the valence-3 EP of 3+5) to 1.08 of the guidance's anisotropy.
+    for (int v : {0, 1}) expectTangentPlaneAt(r, v, 0.25);
   }
 }
 
@@ -244,4 +244,48 @@ TEST(G2Gnurbs, PlanarRegularCagesStayInjectiveAtEveryValence) {
       EXPECT_GT(worst, 0.99 * std::sin(2 * M_PI / n)) << "valence " << n << " k " << k;
     }
   }
+}
+
+namespace {
+
+// Largest |mean curvature| over the EP 1-ring faces (21×21 samples each).
+double maxMeanCurvatureInRings(const G2GnurbsResult& r) {
+  const auto jet = faceJets(r);
+  std::vector<bool> ring(r.cage.quads.rows(), false);
+  for (const auto& p : r.patches) ring[p.face] = ring[p.face] || p.sub >= 0;
+  double worst = 0;
+  for (int f = 0; f < static_cast<int>(ring.size()); ++f) {
+    if (!ring[f]) continue;
+    for (int i = 0; i <= 20; ++i)
+      for (int j = 0; j <= 20; ++j) {
+        const SurfaceJet J = jet(f, i / 20.0, j / 20.0);
+        Eigen::Vector3d n;
+        if (!unitNormal(J, n)) continue;
+        const double E = J.su.dot(J.su), F = J.su.dot(J.sv), G = J.sv.dot(J.sv);
+        const double H = (E * J.svv.dot(n) - 2 * F * J.suv.dot(n) + G * J.suu.dot(n)) / (2 * (E * G - F * F));
+        worst = std::max(worst, std::abs(H));
+      }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(G2Gnurbs, FairSolveKeepsCurvatureNearTheGuidanceAndStepwiseMeetsTheSameConditions) {
+  G2GnurbsOptions stepwise;
+  stepwise.solve = G2GnurbsOptions::Solve::Stepwise;
+  for (int n : {5, 8}) {
+    SCOPED_TRACE("valence " + std::to_string(n));
+    const QuadCage cage = polarCage(n, 3);
+    const G2GnurbsResult fair = buildG2Gnurbs(cage), paper = buildG2Gnurbs(cage, stepwise);
+    const Worst wf = worstContinuity(fair), wp = worstContinuity(paper);
+    const double hf = maxMeanCurvatureInRings(fair), hp = maxMeanCurvatureInRings(paper);
+    std::printf("valence %d: max |H| in the 1-ring fair %.3f, stepwise %.3f; G2 fair %.1e stepwise %.1e\n", n, hf, hp, wf.g2, wp.g2);
+    EXPECT_LT(wp.g1, 1e-8);
+    EXPECT_LT(wp.g2, 1e-6);
+    EXPECT_LT(wf.g2, 1e-6);
+    EXPECT_LT(hf, 0.7 * hp);  // measured 0.25 against 0.75 (valence 5) and 0.48 against 1.42 (valence 8)
+  }
+  const G2GnurbsResult pair = buildG2Gnurbs(edgeStarCage(5, 6, 2), stepwise);
+  EXPECT_LT(worstContinuity(pair).g2, 1e-6);
 }
