@@ -1,0 +1,106 @@
+"""Headless FreeCAD tests of the G-NURBS door: HoleFill.gnurbsSurface on arrays, cages taken
+from Part shells of quads, the parametric object that follows its cage, and bad cages."""
+import json
+
+import FreeCAD
+import Part
+
+import fcharness
+import HoleFill
+
+
+def cage_shell(cage):
+    """The cage as a Part shell of bilinear (ruled) quads, as a user might have built it."""
+    v = [FreeCAD.Vector(*p) for p in cage["vertices"]]
+    faces = []
+    for a, b, c, d in cage["quads"]:
+        # Ruled between edge a-b and edge d-c: corners a, b, c, d in order.
+        faces.append(Part.makeRuledSurface(Part.makeLine(v[a], v[b]), Part.makeLine(v[d], v[c])))
+    return Part.makeShell(faces)
+
+
+def test_surface_from_arrays_is_g2_valid_and_in_control_face_order():
+    cage = HoleFill.sampleCage("cage_valence5")
+    shell, rep = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"])
+    assert shell.isValid() and shell.ShapeType == "Shell", shell.ShapeType
+    assert len(shell.Faces) == rep["brep"]["faces"] == len(rep["faces"]) == 5 * 4 + 40, len(shell.Faces)
+    c = rep["continuity"]
+    assert c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6 and c["g1_elsewhere"] < 1e-8 and c["g2_elsewhere"] < 1e-6, c
+    assert rep["extraordinary_points"] == [0] and rep["warnings"] == []
+    assert rep["faces"][0] == {"name": "Face1", "control_face": 0, "sub_patch": 0, "input_face": 0}, rep["faces"][0]
+    # The EP corner of Face1 is the surface point over cage vertex 0: inside the cage's hull.
+    bb = shell.BoundBox
+    assert bb.XLength > 3 and bb.YLength > 3
+
+
+def test_cage_from_a_part_shell_gives_the_same_surface():
+    cage = HoleFill.sampleCage("cage_valence3")
+    shell = cage_shell(cage)
+    back = HoleFill.cageFromShape(shell)
+    assert len(back["vertices"]) == len(cage["vertices"]) and len(back["quads"]) == len(cage["quads"])
+    s1, r1 = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"])
+    s2, r2 = HoleFill.gnurbsSurface(back["vertices"], back["quads"])
+    assert r2["extraordinary_points"] and r2["continuity"]["g2_spokes"] < 1e-6
+    assert abs(s1.Area - s2.Area) < 1e-9 * s1.Area, (s1.Area, s2.Area)
+    # A cube of Part faces (closed): refined once, a closed shell.
+    box = Part.makeBox(2, 2, 2)
+    cube = HoleFill.cageFromShape(box)
+    s3, r3 = HoleFill.gnurbsSurface(cube["vertices"], cube["quads"])
+    assert r3["refinements"] == 1 and r3["brep"]["closed"] and s3.isClosed(), r3["brep"]
+    solid = Part.Solid(s3)
+    # A smooth, rounded cube inside the 2×2×2 box: FreeCAD's own volume of it.
+    assert solid.isValid() and 0.5 * 8 < abs(solid.Volume) < 8, solid.Volume
+    assert box.BoundBox.isInside(s3.BoundBox.Center) and s3.BoundBox.XLength < 2
+
+
+def test_parametric_object_follows_its_cage_and_undo_removes_it():
+    doc = FreeCAD.newDocument("Gnurbs")
+    doc.UndoMode = 1
+    cage = HoleFill.sampleCage("cage_valence5")
+    src = doc.addObject("Part::Feature", "Cage")
+    src.Shape = cage_shell(cage)
+    doc.recompute()
+    obj = HoleFill.makeGnurbs(src)
+    name = obj.Name
+    assert obj.isValid() and obj.Status == "ok" and obj.G2 < 1e-6, (obj.Status, obj.G2)
+    area = obj.Shape.Area
+    assert json.loads(obj.Report)["extraordinary_points"]
+    # Lift the EP: the surface follows on recompute; the cage object itself is untouched by us.
+    moved = [list(p) for p in cage["vertices"]]
+    moved[0][2] += 0.8
+    src.Shape = cage_shell({"vertices": moved, "quads": cage["quads"]})
+    doc.recompute()
+    assert abs(obj.Shape.Area - area) > 1e-3 * area, (obj.Shape.Area, area)
+    assert obj.G2 < 1e-6
+    doc.undo()  # the source change
+    doc.undo()  # the object
+    assert doc.getObject(name) is None, [o.Name for o in doc.Objects]
+    FreeCAD.closeDocument(doc.Name)
+
+
+def test_bad_cages_give_clear_errors_and_add_nothing():
+    cage = HoleFill.sampleCage("cage_valence5")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], [[0, 1, 2]]), "4 vertex indices")
+    bad = [list(p) for p in cage["vertices"]]
+    bad[3][1] = float("nan")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(bad, cage["quads"]), "non-finite")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=[(0, 1)]),
+                           "extraordinary point 0")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], knots=[(0, 1, 0.0)]), "positive")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], anchors={5: (0, 0, 1)}),
+                           "vertex 5", "not an extraordinary point")
+    tri = Part.makeShell([Part.Face(Part.makePolygon([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0),
+                                                      FreeCAD.Vector(0, 1, 0), FreeCAD.Vector(0, 0, 0)]))])
+    fcharness.expect_error(lambda: HoleFill.cageFromShape(tri), "Face1", "3 corners")
+    fcharness.expect_error(lambda: HoleFill.cageFromShape(Part.Shape()), "no faces")
+    doc = FreeCAD.newDocument("GnurbsBad")
+    src = doc.addObject("Part::Feature", "Tri")
+    src.Shape = tri
+    doc.recompute()
+    count = len(doc.Objects)
+    fcharness.expect_error(lambda: HoleFill.makeGnurbs(src), "corners")
+    assert len(doc.Objects) == count
+    FreeCAD.closeDocument(doc.Name)
+
+
+fcharness.run(globals())
