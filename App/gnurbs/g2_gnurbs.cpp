@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
+#include <unordered_map>
 #include <functional>
 #include <numeric>
 #include <set>
@@ -73,11 +75,31 @@ const Eigen::MatrixXd& thinPlateOfFace() {
 }
 
 // One EP, or two joined by an edge, with its 1-ring faces: grids, variables, constraints and steps.
+// Factorisations of the cluster problems met so far in one build: M and H depend only on the
+// cluster's topology and knot intervals (positions enter c and g), so EPs of one configuration
+// repeated over a cage share one factorisation. Keyed by size and sums, confirmed bit for bit.
+class SolverCache {
+public:
+  const StepwiseSolver& get(const StepwiseProblem& p, const StepwiseOptions& o) {
+    std::size_t key = std::hash<double>()(p.M.sum()) ^ (std::hash<Eigen::Index>()(p.M.rows()) << 1) ^ (std::hash<Eigen::Index>()(p.M.cols()) << 2);
+    for (const auto& h : p.H) key ^= std::hash<double>()(h.sum()) + 0x9e3779b9 + (key << 6) + (key >> 2);
+    for (const auto& s : bucket_[key])
+      if (s->matches(p)) return *s;
+    bucket_[key].push_back(std::make_unique<StepwiseSolver>(p, o));
+    return *bucket_[key].back();
+  }
+
+private:
+  std::unordered_map<std::size_t, std::vector<std::unique_ptr<StepwiseSolver>>> bucket_;
+};
+
 struct ClusterSolve {
   const QuadCage& cage;
   const CageTopology& topo;
   const GuidanceSurface& guidance;
   const G2GnurbsOptions& options;
+  SolverCache& cache;
+  const StepwiseSolver& solverFor(const StepwiseProblem& p) { return cache.get(p, options.solver); }
   std::vector<int> eps, faces;
   std::map<int, int> localFace;
   Eigen::MatrixX3d guide;  // per local face, 121 rows
@@ -254,7 +276,7 @@ struct ClusterSolve {
           }
         }
     }
-    const StepwiseResult sol = solveStepwise(prob, options.solver);
+    const StepwiseResult sol = solverFor(prob).solve(prob.c, prob.g);
     const double size = std::max(1.0, guide.cwiseAbs().maxCoeff());
     if (sol.stepInfeasibility > 1e-9 * size) {
       std::string who;
@@ -382,8 +404,9 @@ G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& optio
       if (isEP[cage.quads(f, k)]) faceCluster[f] = uf.find(cage.quads(f, k));
 
   std::vector<Eigen::MatrixX3d> grids(nf);
+  SolverCache cache;
   for (const auto& [root, members] : clusterEPs) {
-    ClusterSolve cs{cage, topo, guidance, options, members, {}, {}, {}};
+    ClusterSolve cs{cage, topo, guidance, options, cache, members, {}, {}, {}};
     for (int v : members)
       for (const auto& c : topo.facesAround(v))
         if (cs.localFace.emplace(c.face, static_cast<int>(cs.faces.size())).second) cs.faces.push_back(c.face);

@@ -22,10 +22,9 @@ Eigen::MatrixXd leftNullSpace(const Eigen::MatrixXd& A, double tolerance) {
 
 }  // namespace
 
-StepwiseResult solveStepwise(const StepwiseProblem& p, const StepwiseOptions& o) {
-  const Eigen::Index n = p.M.cols(), columns = p.c.cols();
-  if (p.c.rows() != p.M.rows() || p.H.size() != p.steps.size() || p.g.size() != p.steps.size())
-    throw Error("solveStepwise: constraint, step and objective sizes disagree");
+StepwiseSolver::StepwiseSolver(const StepwiseProblem& p, const StepwiseOptions& o) : M_(p.M), steps_(p.steps), H_(p.H), n_(p.M.cols()) {
+  const Eigen::Index n = n_;
+  if (p.H.size() != p.steps.size()) throw Error("solveStepwise: step and objective counts disagree");
   std::vector<int> stepOf(n, -1);
   for (size_t s = 0; s < p.steps.size(); ++s)
     for (int i : p.steps[s]) {
@@ -33,47 +32,78 @@ StepwiseResult solveStepwise(const StepwiseProblem& p, const StepwiseOptions& o)
       stepOf[i] = static_cast<int>(s);
     }
   if (std::count(stepOf.begin(), stepOf.end(), -1) > 0) throw Error("solveStepwise: a variable belongs to no step");
-
-  StepwiseResult out;
-  out.x = Eigen::MatrixXd::Zero(n, columns);
   std::vector<int> known;
   for (size_t s = 0; s < p.steps.size(); ++s) {
-    const std::vector<int>& J = p.steps[s];
-    if (J.empty()) continue;
-    std::vector<int> later;
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (stepOf[i] > static_cast<int>(s)) later.push_back(static_cast<int>(i));
-    // Constraints left to this step and the later ones, with the solved variables moved right.
-    const Eigen::MatrixXd rhs = p.c - p.M * out.x;
-    const Eigen::MatrixXd N = leftNullSpace(p.M(Eigen::all, later), o.rankTolerance);
-    const Eigen::MatrixXd A = N.transpose() * p.M(Eigen::all, J);
-    const Eigen::MatrixXd b = N.transpose() * rhs;
+    Step f;
+    f.J = p.steps[s];
+    f.known = known;
+    if (!f.J.empty()) {
+      std::vector<int> later;
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (stepOf[i] > static_cast<int>(s)) later.push_back(static_cast<int>(i));
+      // Constraints left to this step and the later ones: M x = c projected where the later
+      // steps' columns cannot reach.
+      f.N = leftNullSpace(p.M(Eigen::all, later), o.rankTolerance);
+      f.A = f.N.transpose() * p.M(Eigen::all, f.J);
+      const Eigen::Index nj = static_cast<Eigen::Index>(f.J.size());
+      f.Z = Eigen::MatrixXd::Identity(nj, nj);
+      if (f.A.rows() > 0) {
+        f.constrained = true;
+        f.cod.setThreshold(o.rankTolerance);
+        f.cod.compute(f.A);
+        f.Z = leftNullSpace(f.A.transpose(), o.rankTolerance);
+      }
+      f.HJ = p.H[s](f.J, f.J);
+      if (!known.empty()) f.HJknown = p.H[s](f.J, known);
+      if (f.Z.cols() > 0) {
+        Eigen::MatrixXd R = f.Z.transpose() * f.HJ * f.Z;
+        const double scale = std::max(1.0, R.diagonal().cwiseAbs().maxCoeff());
+        R.diagonal().array() += o.regularization * scale;
+        f.reduced.compute(R);
+      }
+      known.insert(known.end(), f.J.begin(), f.J.end());
+    }
+    factored_.push_back(std::move(f));
+  }
+}
 
-    const Eigen::Index nj = static_cast<Eigen::Index>(J.size());
-    Eigen::MatrixXd x0 = Eigen::MatrixXd::Zero(nj, columns), Z = Eigen::MatrixXd::Identity(nj, nj);
-    if (A.rows() > 0) {
-      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
-      cod.setThreshold(o.rankTolerance);
-      x0 = cod.solve(b);
-      out.stepInfeasibility = std::max(out.stepInfeasibility, (A * x0 - b).cwiseAbs().maxCoeff());
-      Z = leftNullSpace(A.transpose(), o.rankTolerance);
+bool StepwiseSolver::matches(const StepwiseProblem& p) const {
+  if (p.steps != steps_ || p.M.rows() != M_.rows() || p.M.cols() != M_.cols() || p.H.size() != H_.size()) return false;
+  if (!(p.M.array() == M_.array()).all()) return false;
+  for (size_t s = 0; s < H_.size(); ++s)
+    if (p.H[s].rows() != H_[s].rows() || p.H[s].cols() != H_[s].cols() || !(p.H[s].array() == H_[s].array()).all()) return false;
+  return true;
+}
+
+StepwiseResult StepwiseSolver::solve(const Eigen::MatrixXd& c, const std::vector<Eigen::MatrixXd>& g) const {
+  const Eigen::Index columns = c.cols();
+  if (c.rows() != M_.rows() || g.size() != factored_.size()) throw Error("solveStepwise: constraint, step and objective sizes disagree");
+  StepwiseResult out;
+  out.x = Eigen::MatrixXd::Zero(n_, columns);
+  for (size_t s = 0; s < factored_.size(); ++s) {
+    const Step& f = factored_[s];
+    if (f.J.empty()) continue;
+    const Eigen::Index nj = static_cast<Eigen::Index>(f.J.size());
+    Eigen::MatrixXd x0 = Eigen::MatrixXd::Zero(nj, columns);
+    if (f.constrained) {
+      const Eigen::MatrixXd b = f.N.transpose() * (c - M_ * out.x);
+      x0 = f.cod.solve(b);
+      out.stepInfeasibility = std::max(out.stepInfeasibility, (f.A * x0 - b).cwiseAbs().maxCoeff());
     }
     // Minimise over x = x0 + Z y: the objective on this step, the solved variables fixed.
-    const Eigen::MatrixXd HJ = p.H[s](J, J);
-    Eigen::MatrixXd gJ = p.g[s](J, Eigen::all);
-    if (!known.empty()) gJ -= p.H[s](J, known) * out.x(known, Eigen::all);
-    if (Z.cols() > 0) {
-      Eigen::MatrixXd R = Z.transpose() * HJ * Z;
-      const double scale = std::max(1.0, R.diagonal().cwiseAbs().maxCoeff());
-      R.diagonal().array() += o.regularization * scale;
-      const Eigen::MatrixXd y = R.ldlt().solve(Z.transpose() * (gJ - HJ * x0));
-      x0 += Z * y;
-    }
-    out.x(J, Eigen::all) = x0;
-    known.insert(known.end(), J.begin(), J.end());
+    Eigen::MatrixXd gJ = g[s](f.J, Eigen::all);
+    if (!f.known.empty()) gJ -= f.HJknown * out.x(f.known, Eigen::all);
+    if (f.Z.cols() > 0) x0 += f.Z * f.reduced.solve(f.Z.transpose() * (gJ - f.HJ * x0));
+    out.x(f.J, Eigen::all) = x0;
   }
-  if (p.M.rows() > 0) out.constraintResidual = (p.M * out.x - p.c).cwiseAbs().maxCoeff();
+  if (M_.rows() > 0) out.constraintResidual = (M_ * out.x - c).cwiseAbs().maxCoeff();
   return out;
+}
+
+StepwiseResult solveStepwise(const StepwiseProblem& p, const StepwiseOptions& o) {
+  if (p.c.rows() != p.M.rows() || p.H.size() != p.steps.size() || p.g.size() != p.steps.size())
+    throw Error("solveStepwise: constraint, step and objective sizes disagree");
+  return StepwiseSolver(p, o).solve(p.c, p.g);
 }
 
 }  // namespace holefill

@@ -35,4 +35,29 @@ struct StepwiseResult {
 
 StepwiseResult solveStepwise(const StepwiseProblem& problem, const StepwiseOptions& options = {});
 
+// The same solve split in two: the factorisations depend only on M, the steps and H, so a
+// problem that recurs with other right-hand sides c and g (an EP configuration repeated over a
+// cage, at other positions) is factored once. solve() gives what solveStepwise gives.
+class StepwiseSolver {
+public:
+  StepwiseSolver(const StepwiseProblem& problem, const StepwiseOptions& options = {});
+  StepwiseResult solve(const Eigen::MatrixXd& c, const std::vector<Eigen::MatrixXd>& g) const;
+  // True when `problem` has this solver's M, steps and H (bit for bit).
+  bool matches(const StepwiseProblem& problem) const;
+
+private:
+  struct Step {
+    std::vector<int> J, known;
+    Eigen::MatrixXd N, A, Z, HJ, HJknown;
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+    Eigen::LDLT<Eigen::MatrixXd> reduced;  // of Zᵀ H_J Z (regularised), when Z has columns
+    bool constrained = false;
+  };
+  Eigen::MatrixXd M_;
+  std::vector<std::vector<int>> steps_;
+  std::vector<Eigen::MatrixXd> H_;
+  std::vector<Step> factored_;
+  Eigen::Index n_ = 0;
+};
+
 }  // namespace holefill
