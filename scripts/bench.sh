@@ -7,13 +7,23 @@
 #  3. tests/bench/bench_meshfill.py in freecadcmd: HoleFill mesh-hole filling vs CGAL PMP
 #     triangulate_refine_and_fair_hole (holefill_bench_cgal_fill) vs FreeCAD Mesh fillupHoles,
 #     on CGAL's demo meshes, assimp's sphereWithHole.stl and holes cut from closed meshes.
+#  4. holefill_bench_gnurbs: G² G-NURBS vs OpenSubdiv's Catmull-Clark limit surface (Gregory end
+#     caps) on the same quad cages: G1/G2 across every cage edge, curvature at EPs, time.
+#     BENCH_ONLY=gnurbs runs part 4 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
-export HOLEFILL_EXTRA_PKGS="libcgal-dev libcgal-demo assimp-testmodels"
+export HOLEFILL_EXTRA_PKGS="libcgal-dev libcgal-demo assimp-testmodels libosd-dev"
 . "$(dirname "$0")/prepare.sh"
 export BENCH_OUT="$root/bench-out"
 mkdir -p "$BENCH_OUT"
+if [ "${BENCH_ONLY:-}" = gnurbs ]; then  # BENCH_ONLY=gnurbs runs part 4 alone
+  cmake -S "$root" -B "$build" >/dev/null
+  cmake --build "$build" --target holefill_bench_gnurbs -j "$(nproc)"
+  "$build/tests/holefill_bench_gnurbs" 4 | tee "$BENCH_OUT/bench_gnurbs.md"
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" != meshfill ]; then  # BENCH_ONLY=meshfill runs part 3 alone
 "$build/tests/holefill_bench_params" "${BENCH_PARAM_HOLES:-1000}" | tee "$BENCH_OUT/bench_params.md"
 echo
@@ -41,4 +51,7 @@ echo
   xvfb-run -a -s "-screen 0 1280x1024x24 -dpi 96 -nolisten tcp" timeout 300 freecad tests/bench/meshfill_pictures.py >/dev/null 2>&1 || true
   rm -rf "$HOME"
 )
+cmake --build "$build" --target holefill_bench_gnurbs -j "$(nproc)"
+echo
+"$build/tests/holefill_bench_gnurbs" 4 | tee "$BENCH_OUT/bench_gnurbs.md"
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

@@ -224,5 +224,20 @@ int main(int argc, char** argv) {
       std::printf("| | OpenSubdiv | failed: %s | | | | | |\n", e.what());
     }
   }
+  // Curvature next to high-valence EPs as OpenSubdiv isolates them further, against ours (which
+  // has no isolation level).
+  std::printf("\n| valence | HoleFill max curvature at EPs × diag |");
+  for (int iso : {2, 4, 6, 8}) std::printf(" OpenSubdiv isolation %d |", iso);
+  std::printf("\n|---|---|---|---|---|---|\n");
+  for (int n : {5, 6, 8}) {
+    const QuadCage cage = cages::polarCage(n, 4);
+    const G2GnurbsResult r = buildG2Gnurbs(cage);
+    std::printf("| %d | %.3g |", n, measure(r.cage, faceJets(r)).kEP);
+    for (int iso : {2, 4, 6, 8}) {
+      const OsdLimit osd(cage, iso);
+      std::printf(" %.3g |", measure(cage, [&](int f, double u, double v) { return osd.jet(f, u, v); }).kEP);
+    }
+    std::printf("\n");
+  }
   return 0;
 }
