@@ -76,10 +76,16 @@ struct Extractor {
   // the end's Bézier point a third of the way along the edge rather than on v (a zero-length
   // end tangent, measured as singular normals at every boundary corner of an open cage).
   double continuation(int v, int from) const {
-    if (featureEdges[v] != 2 || (topo.onBoundary(v) && topo.facesAround(v).size() == 1)) return cage.knot(v, from);
+    if (!lineThrough(v)) return cage.knot(v, from);
     for (int s : topo.spokes(v))
       if (s != from && isFeatureEdge(v, s)) return cage.knot(v, s);
     return cage.knot(v, from);
+  }
+  // A feature line runs on through v (its B-spline's segments join there) unless it ends, meets
+  // another, turns at a boundary corner, or passes an EP: a sharp EP is a corner of its creases
+  // (g2_gnurbs.cpp: the smooth spokes' G² conditions cannot meet a crease curved through it).
+  bool lineThrough(int v) const {
+    return featureEdges[v] == 2 && !(topo.onBoundary(v) && topo.facesAround(v).size() == 1) && !topo.isExtraordinary(v);
   }
   bool isFeatureEdge(int a, int b) const {
     if (cage.isSharp(a, b)) return true;
@@ -122,7 +128,7 @@ GuidanceSurface extractGuidanceSurface(const QuadCage& cage, const CageTopology&
         total += w;
       }
       out.vertexPoints[v] = sum / total;
-    } else if (x.featureEdges[v] == 2 && !(topo.onBoundary(v) && fan.size() == 1)) {
+    } else if (x.lineThrough(v)) {
       // On a feature line: the junction of its B-spline's two segments at v.
       int a = -1, b = -1;
       for (int s : sp)
@@ -134,7 +140,7 @@ GuidanceSurface extractGuidanceSurface(const QuadCage& cage, const CageTopology&
       };
       out.vertexPoints[v] = (db * near(a, da) + da * near(b, db)) / (da + db);
     } else {
-      out.vertexPoints[v] = x.point(v);  // a line ends or turns here, or a boundary corner: interpolated
+      out.vertexPoints[v] = x.point(v);  // a line ends or meets others here, a boundary corner, a sharp EP: interpolated
     }
   }
 

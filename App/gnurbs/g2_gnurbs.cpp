@@ -7,6 +7,7 @@
 #include <functional>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 #include "fill/fairness_energy.h"
 #include "geometry/bezier_patch.h"
@@ -107,6 +108,13 @@ struct ClusterSolve {
   int gid(int lf, int index) const { return lf * kFacePoints + index; }
   bool isClusterEP(int v) const { return std::find(eps.begin(), eps.end(), v) != eps.end(); }
 
+  // b and r at EP v: the eigen-polyhedron's b and connectionRho, also at a sharp EP, whose
+  // smooth spokes keep the regular N-star's angle 2π/N (measured G² with darts and corners).
+  std::pair<double, double> connectionAt(int v) const {
+    const int n = topo.valence(v);
+    return {eigenPolyhedronB(n), std::isnan(options.rho) || n == 3 ? connectionRho(n) : options.rho};
+  }
+
   // Face-local ids of a spoke's rows: m along the spoke from v, n into face f.
   std::function<int(int, int)> spokeRows(int f, int v, int w) const {
     const int lf = localFace.at(f), p = cornerOf(cage, f, v), q = cornerOf(cage, f, w);
@@ -122,6 +130,7 @@ struct ClusterSolve {
     UnionFind uf(nl * kFacePoints);
     std::vector<GridCondition> conditions;
     std::set<std::uint64_t> done;
+    std::vector<int> creaseRow;  // grid points on sharp spokes, fixed to the guidance
     for (int v : eps) {
       const auto& fan = topo.facesAround(v);
       const auto& sp = topo.spokes(v);
@@ -130,20 +139,26 @@ struct ClusterSolve {
         const int w = sp[i], fa = fan[i].face, fb = fan[(i + n - 1) % n].face;
         const auto A = spokeRows(fa, v, w), B = spokeRows(fb, v, w);
         for (int m = 0; m < kGrid; ++m) uf.join(A(m, 0), B(m, 0));
+        if (cage.isSharp(v, w)) {
+          // A crease: C0 only. Its curve is the guidance's, which ends at the EP (the extraction
+          // makes a sharp EP a corner of its creases), but for its first Bézier point: when
+          // the creases split the EP evenly, the smooth spokes' G1 conditions force the two crease
+          // tangents to be opposite and of equal knot-scaled length, which the guidance's are
+          // not (measured infeasibility 1.6e-2 with the whole curve fixed; a crease run smoothly
+          // through the EP was as infeasible, and left free the crease tangents collapsed to 0).
+          for (int m = 0; m < kGrid; ++m)
+            if (m != 1) creaseRow.push_back(A(m, 0));
+          continue;
+        }
         if (!done.insert(QuadCage::edgeKey(v, w)).second) continue;
         SpokeConnection k;
         k.dS = cage.knot(v, w);
         k.dA = cage.knot(v, sp[(i + 1) % n]);
         k.dB = cage.knot(v, sp[(i + n - 1) % n]);
-        auto rhoAt = [&](int valence) {
-          return std::isnan(options.rho) || valence == 3 ? connectionRho(valence) : options.rho;
-        };
-        k.b0 = eigenPolyhedronB(n);
-        k.r = rhoAt(n);
+        std::tie(k.b0, k.r) = connectionAt(v);
         if (isClusterEP(w)) {
           k.epAtBothEnds = true;
-          k.b1 = eigenPolyhedronB(topo.valence(w));
-          k.r1 = rhoAt(topo.valence(w));
+          std::tie(k.b1, k.r1) = connectionAt(w);
         }
         appendSpokeConditions(k, A, B, conditions);
       }
@@ -179,6 +194,13 @@ struct ClusterSolve {
             }
       }
     }
+    for (int g : creaseRow) fixed[g] = true;
+    // An anchored EP is where its anchor puts it (sec. 5.1), fixed like the crease rows.
+    for (int v : eps)
+      if (cage.anchors.count(v)) {
+        const auto& c = topo.facesAround(v)[0];
+        fixed[gid(localFace.at(c.face), gridIndex(c.corner, (c.corner + 1) % 4, 0, 0))] = true;
+      }
     // Variables: one per merged class that has no fixed member.
     std::vector<int> var(nl * kFacePoints, -1);
     std::map<int, int> classStep;
@@ -322,27 +344,29 @@ std::string refinementNeed(const QuadCage& cage, const CageTopology& topo) {
       if (isEP[cage.quads(f, k)] && isEP[cage.quads(f, k + 2)])
         return cage.quadName(f) + " holds extraordinary points " + std::to_string(cage.quads(f, k) + cage.numberBase) + " and " +
                std::to_string(cage.quads(f, k + 2) + cage.numberBase) + ", which share no edge";
+  // A crease through an EP (its sharp spokes, and their continuations beyond the spokes' ends)
+  // is the sharp-EP case the construction handles; other creases must keep off the 1-ring.
   for (std::uint64_t key : cage.sharp) {
     const int a = static_cast<int>(key & 0xffffffffu), b = static_cast<int>(key >> 32);
     for (int end : {a, b})
       for (const auto& c : topo.facesAround(end))
         for (int k = 0; k < 4; ++k) {
           const int v = cage.quads(c.face, k);
-          if (isEP[v] && v != a && v != b)
+          if (isEP[v] && v != a && v != b && !cage.isSharp(v, a) && !cage.isSharp(v, b))
             return "sharp " + cage.edgeName(a, b) + " touches the 1-ring of extraordinary point " + std::to_string(v + cage.numberBase);
         }
   }
   return "";
 }
 
-// Where creases leave the surface short of G1 around a vertex inside the cage: a dart (one
+// Where creases leave the surface short of G1 around a regular vertex inside the cage: a dart (one
 // sharp edge ends there; the extraction interpolates the vertex, so only C0 around it) and a
 // turn (two sharp edges not opposite in the fan: the faces on the outer side meet a corner of
 // the crease that no bicubic B-spline rule makes smooth; measured G1 9e-3 rad there).
 std::vector<std::string> creaseWarnings(const QuadCage& cage, const CageTopology& topo) {
   std::vector<std::string> out;
   for (int v = 0; v < topo.vertexCount(); ++v) {
-    if (topo.onBoundary(v)) continue;
+    if (topo.onBoundary(v) || topo.isExtraordinary(v)) continue;  // creases at EPs: connectionAt
     const auto& sp = topo.spokes(v);
     std::vector<int> at;
     for (int i = 0; i < static_cast<int>(sp.size()); ++i)
@@ -362,14 +386,6 @@ std::vector<std::string> creaseWarnings(const QuadCage& cage, const CageTopology
 G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& options) {
   G2GnurbsResult result;
   result.cage = input;
-  {
-    const CageTopology topo(input);
-    for (int v : topo.extraordinaryPoints())
-      for (int w : topo.spokes(v))
-        if (input.isSharp(v, w))
-          throw Error("sharp " + input.edgeName(v, w) + " ends at extraordinary point " + std::to_string(v + input.numberBase) +
-                      "; sharp edges at EPs are not supported by the G² construction yet");
-  }
   for (;;) {
     const std::string why = refinementNeed(result.cage, CageTopology(result.cage));
     if (why.empty()) break;

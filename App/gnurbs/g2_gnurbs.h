@@ -24,6 +24,11 @@
 // to another is less round than the guidance's (σ₂/σ₁ 0.29 of the guidance's 0.99 at a valence-3
 // EP next to a valence-5 one with the fair solve, 0.55 with the stepwise one); a Catmull–Clark
 // step separates such EPs when that matters.
+// Sharp edges make C0 creases. At an EP with sharp spokes (a sharp EP) the smooth spokes keep
+// their G² conditions and the crease rows are the guidance's crease curves, which the
+// extraction ends at the EP as at a corner; the EP sits at its cage vertex, or at its anchor
+// (sec. 5.1, V_EP = A_EP), which moves only the EP's 1-ring. Creases elsewhere in a 1-ring make
+// the cage refined once; creases ending or turning at regular vertices are reported.
 #pragma once
 
 #include <cmath>
@@ -78,8 +83,8 @@ struct G2GnurbsResult {
   std::vector<std::string> warnings;      // e.g. an EP whose conditions could not all be met, and why
 };
 
-// Throws Error for invalid cages (CageTopology), sharp edges at an EP, and EPs too close when
-// options.refineWhenNeeded is off.
+// Throws Error for invalid cages (CageTopology), anchors away from EPs, and cages needing a
+// refinement when options.refineWhenNeeded is off.
 G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& options = {});
 
 // The surface over each control face in face parameters (sub-patches rescaled), for

@@ -191,11 +191,18 @@ int main(int argc, char** argv) {
     cases.push_back({"crease across an EP's 1-ring (valence 6)", c});
   }
   {
+    // Creases along spoke lines 0 and 2 from the cage boundary through the EP: a sharp EP.
     QuadCage c = cages::polarCage(5, 3);
-    c.setSharp(0, 1);
-    c.setSharp(1, 2);
-    c.setSharp(2, 3);
+    for (int s : {0, 2}) {
+      int prev = 0;
+      for (int a = 1; a <= 3; ++a) {
+        c.setSharp(prev, 1 + 3 * s + a - 1);
+        prev = 1 + 3 * s + a - 1;
+      }
+    }
     cases.push_back({"crease through an EP (valence 5)", c});
+    c.anchors[0] = Eigen::Vector3d(0, 0, 0.8);
+    cases.push_back({"crease through an anchored EP (valence 5)", c});
   }
   {
     const QuadCage many = manyEPs(50);

@@ -36,8 +36,6 @@ expect_error "non-manifold" "same direction" "$T/nonmanifold.obj"
 expect_error "truncated" "" "$T/truncated.obj"
 echo '[[1, 2], [1, 99]]' >"$T/sharp_bad.json"
 expect_error "sharp edge off the cage" "not a cage edge" "$T/cage_valence5.obj" --sharp "$T/sharp_bad.json"
-echo '[[1, 2]]' >"$T/sharp_ep.json"
-expect_error "sharp edge at an EP" "extraordinary point 1" "$T/cage_valence5.obj" --sharp "$T/sharp_ep.json"
 echo '[[2, 0, 0, 1]]' >"$T/anchor_regular.json"
 expect_error "anchor at a regular vertex" "anchor" "$T/cage_valence5.obj" --anchors "$T/anchor_regular.json"
 echo '[[1, 0, 0' >"$T/anchor_broken.json"
@@ -76,6 +74,20 @@ assert c["g1_elsewhere"] < 1e-8 and c["g2_elsewhere"] < 1e-6 and c["singular_sam
 assert r["brep"]["valid"] and not r["warnings"], r
 PY
 else bad "sharp: $(cat "$T/err")"; fi
+# A crease through the EP (vertex 1) along two spoke lines, with an anchor lifting the EP: the EP
+# sits on the anchor, smooth edges are G², the creases C0.
+echo '[[1, 2], [2, 3], [3, 4], [1, 8], [8, 9], [9, 10]]' >"$T/sharp_ep.json"
+echo '[[1, 0.05, 0.0, 0.9]]' >"$T/anchor_ep.json"
+if "$H" gnurbs "$T/cage_valence5.obj" --sharp "$T/sharp_ep.json" --anchors "$T/anchor_ep.json" --out "$T/peak.step" --json \
+     >"$T/peak.json" 2>"$T/err"; then
+  "$PY" - "$T" <<'PY' && ok "crease through an anchored EP: G2 elsewhere, creases C0" || bad "peak report: $(cat "$T/peak.json")"
+import json, sys
+r = json.load(open(sys.argv[1] + "/peak.json"))
+c = r["continuity"]
+assert c["sharp_edges"] == 6 and c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6 and c["g1_elsewhere"] < 1e-8, c
+assert r["refinements"] == 0 and not r["warnings"] and r["brep"]["valid"], r
+PY
+else bad "peak: $(cat "$T/err")"; fi
 cp "$T/cage_valence5.obj" "$T/dart.obj"
 printf '# sharp 3 4\n' >>"$T/dart.obj"
 "$H" gnurbs "$T/dart.obj" --out "$T/dart.brep" >/dev/null 2>"$T/err"; rc=$?

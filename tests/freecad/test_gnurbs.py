@@ -28,9 +28,16 @@ def test_surface_from_arrays_is_g2_valid_and_in_control_face_order():
     assert c["g1_spokes"] < 1e-8 and c["g2_spokes"] < 1e-6 and c["g1_elsewhere"] < 1e-8 and c["g2_elsewhere"] < 1e-6, c
     assert rep["extraordinary_points"] == [0] and rep["warnings"] == []
     assert rep["faces"][0] == {"name": "Face1", "control_face": 0, "sub_patch": 0, "input_face": 0}, rep["faces"][0]
-    # The EP corner of Face1 is the surface point over cage vertex 0: inside the cage's hull.
     bb = shell.BoundBox
     assert bb.XLength > 3 and bb.YLength > 3
+    # A crease ending inside the cage (at spoke vertex 1) is a dart: built, with a warning.
+    dart, drep = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=[(0, 1)])
+    assert dart.isValid() and any("dart" in w and "vertex 1" in w for w in drep["warnings"]), drep["warnings"]
+    # An anchor places the EP: Face1's corner (0, 0) is the EP.
+    peak, prep = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=[(0, 1), (1, 2), (2, 3)],
+                                        anchors={0: (0.0, 0.0, 1.5)})
+    corner = peak.Faces[0].Surface.value(0, 0)
+    assert (corner - FreeCAD.Vector(0, 0, 1.5)).Length < 1e-9, corner
 
 
 def test_cage_from_a_part_shell_gives_the_same_surface():
@@ -86,8 +93,6 @@ def test_bad_cages_give_clear_errors_and_add_nothing():
     bad = [list(p) for p in cage["vertices"]]
     bad[3][1] = float("nan")
     fcharness.expect_error(lambda: HoleFill.gnurbsSurface(bad, cage["quads"]), "non-finite")
-    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=[(0, 1)]),
-                           "extraordinary point 0")
     fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], knots=[(0, 1, 0.0)]), "positive")
     fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], anchors={5: (0, 0, 1)}),
                            "vertex 5", "not an extraordinary point")
