@@ -116,4 +116,11 @@ ProjectionResult projectSequence(const BSplineSurface& s, const std::vector<Eige
   return r;
 }
 
+double projectPointFrom(const BSplineSurface& s, const Eigen::Vector3d& point, Eigen::Vector2d& uv, const ProjectionOptions& opt) {
+  const Domain D{s.knotsU[s.degreeU], s.knotsU[s.knotsU.size() - s.degreeU - 1], s.knotsV[s.degreeV],
+                 s.knotsV[s.knotsV.size() - s.degreeV - 1]};
+  uv = D.clamp(uv);
+  return newton(s, D, point, uv, opt);
+}
+
 }  // namespace holefill

@@ -31,4 +31,9 @@ struct ProjectionResult {
 ProjectionResult projectSequence(const BSplineSurface& s, const std::vector<Eigen::Vector3d>& points,
                                  const ProjectionOptions& options = {});
 
+// One point by Newton from the parameters `uv` (updated), within the surface's domain; returns
+// the distance reached. For callers that seed from their own search (several patches).
+double projectPointFrom(const BSplineSurface& s, const Eigen::Vector3d& point, Eigen::Vector2d& uv,
+                        const ProjectionOptions& options = {});
+
 }  // namespace holefill

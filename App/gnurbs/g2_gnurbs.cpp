@@ -18,6 +18,25 @@
 
 namespace holefill {
 
+// Factorisations of the cluster problems met so far: M and H depend only on the
+// cluster's topology and knot intervals (positions enter c and g), so EPs of one configuration
+// repeated over a cage share one factorisation. Keyed by size and sums, confirmed bit for bit.
+class SolverCacheImpl {
+public:
+  const StepwiseSolver& get(const StepwiseProblem& p, const StepwiseOptions& o) {
+    std::size_t key = std::hash<double>()(p.M.sum()) ^ (std::hash<Eigen::Index>()(p.M.rows()) << 1) ^ (std::hash<Eigen::Index>()(p.M.cols()) << 2);
+    for (const auto& h : p.H) key ^= std::hash<double>()(h.sum()) + 0x9e3779b9 + (key << 6) + (key >> 2);
+    for (const auto& s : bucket_[key])
+      if (s->matches(p)) return *s;
+    bucket_[key].push_back(std::make_unique<StepwiseSolver>(p, o));
+    return *bucket_[key].back();
+  }
+
+private:
+  std::unordered_map<std::size_t, std::vector<std::unique_ptr<StepwiseSolver>>> bucket_;
+};
+
+
 namespace {
 
 constexpr int kGrid = 11;              // coefficients per side of a face's 2×2 biquintic grid
@@ -76,30 +95,12 @@ const Eigen::MatrixXd& thinPlateOfFace() {
 }
 
 // One EP, or two joined by an edge, with its 1-ring faces: grids, variables, constraints and steps.
-// Factorisations of the cluster problems met so far in one build: M and H depend only on the
-// cluster's topology and knot intervals (positions enter c and g), so EPs of one configuration
-// repeated over a cage share one factorisation. Keyed by size and sums, confirmed bit for bit.
-class SolverCache {
-public:
-  const StepwiseSolver& get(const StepwiseProblem& p, const StepwiseOptions& o) {
-    std::size_t key = std::hash<double>()(p.M.sum()) ^ (std::hash<Eigen::Index>()(p.M.rows()) << 1) ^ (std::hash<Eigen::Index>()(p.M.cols()) << 2);
-    for (const auto& h : p.H) key ^= std::hash<double>()(h.sum()) + 0x9e3779b9 + (key << 6) + (key >> 2);
-    for (const auto& s : bucket_[key])
-      if (s->matches(p)) return *s;
-    bucket_[key].push_back(std::make_unique<StepwiseSolver>(p, o));
-    return *bucket_[key].back();
-  }
-
-private:
-  std::unordered_map<std::size_t, std::vector<std::unique_ptr<StepwiseSolver>>> bucket_;
-};
-
 struct ClusterSolve {
   const QuadCage& cage;
   const CageTopology& topo;
   const GuidanceSurface& guidance;
   const G2GnurbsOptions& options;
-  SolverCache& cache;
+  SolverCacheImpl& cache;
   const StepwiseSolver& solverFor(const StepwiseProblem& p) { return cache.get(p, options.solver); }
   std::vector<int> eps, faces;
   std::map<int, int> localFace;
@@ -383,7 +384,15 @@ std::vector<std::string> creaseWarnings(const QuadCage& cage, const CageTopology
 
 }  // namespace
 
-G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& options) {
+struct G2GnurbsBuilder::Cache : SolverCacheImpl {};
+
+G2GnurbsBuilder::G2GnurbsBuilder(const G2GnurbsOptions& options) : options_(options), cache_(std::make_unique<Cache>()) {}
+G2GnurbsBuilder::~G2GnurbsBuilder() = default;
+
+G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& options) { return G2GnurbsBuilder(options).build(input); }
+
+G2GnurbsResult G2GnurbsBuilder::build(const QuadCage& input) {
+  const G2GnurbsOptions& options = options_;
   G2GnurbsResult result;
   result.cage = input;
   for (;;) {
@@ -420,9 +429,8 @@ G2GnurbsResult buildG2Gnurbs(const QuadCage& input, const G2GnurbsOptions& optio
       if (isEP[cage.quads(f, k)]) faceCluster[f] = uf.find(cage.quads(f, k));
 
   std::vector<Eigen::MatrixX3d> grids(nf);
-  SolverCache cache;
   for (const auto& [root, members] : clusterEPs) {
-    ClusterSolve cs{cage, topo, guidance, options, cache, members, {}, {}, {}};
+    ClusterSolve cs{cage, topo, guidance, options, *cache_, members, {}, {}, {}};
     for (int v : members)
       for (const auto& c : topo.facesAround(v))
         if (cs.localFace.emplace(c.face, static_cast<int>(cs.faces.size())).second) cs.faces.push_back(c.face);

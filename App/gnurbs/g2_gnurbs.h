@@ -32,6 +32,7 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,20 @@ struct G2GnurbsResult {
 // Throws Error for invalid cages (CageTopology), anchors away from EPs, and cages needing a
 // refinement when options.refineWhenNeeded is off.
 G2GnurbsResult buildG2Gnurbs(const QuadCage& cage, const G2GnurbsOptions& options = {});
+
+// buildG2Gnurbs for many cages of one topology (fitting, interactive editing): the cluster
+// factorisations depend only on topology and knot intervals, so they are kept between builds.
+class G2GnurbsBuilder {
+public:
+  explicit G2GnurbsBuilder(const G2GnurbsOptions& options = {});
+  ~G2GnurbsBuilder();
+  G2GnurbsResult build(const QuadCage& cage);
+
+private:
+  struct Cache;
+  G2GnurbsOptions options_;
+  std::unique_ptr<Cache> cache_;
+};
 
 // The surface over each control face in face parameters (sub-patches rescaled), for
 // cageEdgeContinuity and evaluation; `result` must outlive the function.

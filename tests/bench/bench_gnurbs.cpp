@@ -17,6 +17,7 @@
 #include "geometry/error.h"
 #include "gnurbs/g2_gnurbs.h"
 #include "gnurbs/gnurbs_brep.h"
+#include "gnurbs/gnurbs_fit.h"
 #include "gnurbs/patch_continuity.h"
 #include "gnurbs/sample_cages.h"
 
@@ -168,6 +169,77 @@ bool nonUniform(const QuadCage& c) {
   return false;
 }
 
+// Points (x, y, f(x, y)) over the footprint of the flat cage's surface (a 14×14 grid per patch).
+Eigen::MatrixX3d targetOver(const QuadCage& cage, const std::function<double(double, double)>& f) {
+  QuadCage flat = cage;
+  flat.vertices.col(2).setZero();
+  flat.anchors.clear();
+  const G2GnurbsResult s = buildG2Gnurbs(flat);
+  std::vector<Eigen::RowVector3d> pts;
+  for (const auto& p : s.patches)
+    for (int i = 0; i <= 13; ++i)
+      for (int j = 0; j <= 13; ++j) {
+        const Eigen::Vector3d q = p.surface.point(i / 13.0, j / 13.0);
+        pts.emplace_back(q.x(), q.y(), f(q.x(), q.y()));
+      }
+  Eigen::MatrixX3d out(pts.size(), 3);
+  for (size_t k = 0; k < pts.size(); ++k) out.row(k) = pts[k];
+  return out;
+}
+
+void sharpSpokeLines(QuadCage& c, int k, std::initializer_list<int> spokes) {
+  for (int sp : spokes) {
+    int prev = 0;
+    for (int a = 1; a <= k; ++a) {
+      c.setSharp(prev, 1 + sp * k + a - 1);
+      prev = 1 + sp * k + a - 1;
+    }
+  }
+}
+
+void fittingTable() {
+  struct Target {
+    std::string name;
+    QuadCage cage;
+    std::function<double(double, double)> f;
+  };
+  std::vector<Target> targets;
+  targets.push_back({"smooth: wave over a valence-5 cage", cages::polarCage(5, 3),
+                     [](double x, double y) { return 0.3 * std::sin(0.6 * x) * std::cos(0.5 * y) + 0.02 * x * y; }});
+  {
+    QuadCage c = cages::polarCage(6, 3);
+    sharpSpokeLines(c, 3, {0, 3});
+    targets.push_back({"ridge through a valence-6 EP (creases on 2 spokes)", c,
+                       [](double x, double y) { return 0.6 - 0.3 * std::abs(y) + 0.02 * x * x; }});
+  }
+  {
+    QuadCage c = cages::polarCage(6, 3);
+    sharpSpokeLines(c, 3, {0, 2, 4});
+    targets.push_back({"three-sided corner at a valence-6 EP (creases on 3 spokes)", c, [](double x, double y) {
+                         double m = -1e9;
+                         for (double a : {M_PI / 3, M_PI, 5 * M_PI / 3}) m = std::max(m, std::cos(a) * x + std::sin(a) * y);
+                         return 0.8 - 0.3 * m;
+                       }});
+  }
+  std::printf("\n| target | points | anchors | d_max %% | d_avg %% | d_max %% sharp | d_avg %% sharp | rounds | time (s) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const Target& t : targets) {
+    const Eigen::MatrixX3d target = targetOver(t.cage, t.f);
+    QuadCage start = t.cage;
+    start.vertices.col(2).setZero();  // from the flat cage
+    for (bool anchors : {false, true}) {
+      if (anchors && t.cage.sharp.empty()) continue;
+      QuadCage c = start;
+      if (anchors) c.anchors[0] = c.vertices.row(0).transpose();
+      GnurbsFitOptions o;
+      o.iterations = 8;
+      const GnurbsFitResult r = fitGnurbs(c, target, o);
+      std::printf("| %s | %d | %s | %.4f | %.5f | %.4f | %.5f | %d | %.2f |\n", t.name.c_str(), static_cast<int>(target.rows()),
+                  anchors ? "at the EP" : "none", 100 * r.dMax, 100 * r.dAvg, 100 * r.dMaxSharp, 100 * r.dAvgSharp, o.iterations, r.seconds);
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -231,6 +303,7 @@ int main(int argc, char** argv) {
       std::printf("| | OpenSubdiv | failed: %s | | | | | |\n", e.what());
     }
   }
+  fittingTable();
   // Curvature next to high-valence EPs as OpenSubdiv isolates them further, against ours (which
   // has no isolation level).
   std::printf("\n| valence | HoleFill max curvature at EPs × diag |");
