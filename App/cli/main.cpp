@@ -25,10 +25,12 @@
 #include "geometry/text_file.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
+#include "gnurbs/gnurbs_fit.h"
 #include "gnurbs/gnurbs_report.h"
 #include "gnurbs/sample_cages.h"
 #include "geometry/atomic_file.h"
 #include "geometry/error.h"
+#include "geometry/json_writer.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
 #include "mesh/mesh_hole_fill.h"
@@ -54,9 +56,11 @@ const char* kUsage =
     "                [--shape-order 0|1|2|3] [--triangulation angle|dihedral|auto] "
     "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
     "  holefill mesh-holes MESH [--json]\n"
-    "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine] [--json]\n"
+    "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine]\n"
+    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--json]\n"
     "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
-    "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json\n"
+    "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
+    "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
@@ -275,6 +279,28 @@ int cmdMeshFill(const Args& a) {
   return code;
 }
 
+// A fitting target's points: a mesh's vertices, or an .xyz file of "x y z" lines.
+Eigen::MatrixX3d readPoints(const std::string& path) {
+  if (fileExtension(path) != "xyz") return readMesh(path).vertices;
+  std::istringstream in(readFileBytes(path, std::size_t(1) << 30));
+  std::vector<Eigen::RowVector3d> pts;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    std::istringstream ls(line);
+    std::string t[3];
+    if (!(ls >> t[0]) || t[0][0] == '#') continue;
+    double x[3];
+    for (int k = 0; k < 3; ++k)
+      if ((k > 0 && !(ls >> t[k])) || !parseDouble(t[k], x[k]) || !std::isfinite(x[k]))
+        throw Error("'" + path + "' line " + std::to_string(n) + ": expected three finite numbers x y z");
+    pts.emplace_back(x[0], x[1], x[2]);
+  }
+  if (pts.empty()) throw Error("'" + path + "' holds no points");
+  Eigen::MatrixX3d out(pts.size(), 3);
+  for (size_t k = 0; k < pts.size(); ++k) out.row(static_cast<Eigen::Index>(k)) = pts[k];
+  return out;
+}
+
 // Exit 0 when written with every G² condition met, 3 when written with warnings (the report
 // says which EP fell short and by how much).
 int cmdGnurbs(const Args& a) {
@@ -288,7 +314,36 @@ int cmdGnurbs(const Args& a) {
   G2GnurbsOptions o;
   o.refineWhenNeeded = !a.has("--no-refine");
   const auto t0 = std::chrono::steady_clock::now();
-  const G2GnurbsResult r = buildG2Gnurbs(cage, o);
+  std::string fitJson;
+  G2GnurbsResult r;
+  if (a.has("--fit")) {
+    GnurbsFitOptions fo;
+    fo.surface = o;
+    if (a.has("--fit-rounds")) fo.iterations = static_cast<int>(number(a.get("--fit-rounds"), "--fit-rounds"));
+    const Eigen::MatrixX3d target = readPoints(a.get("--fit"));
+    const GnurbsFitResult f = fitGnurbs(cage, target, fo);
+    r = f.surface;
+    cage = f.cage;
+    JsonWriter j;
+    j.beginObject()
+        .field("points", static_cast<int>(target.rows()))
+        .field("variables", f.variables)
+        .field("d_max_percent", 100 * f.dMax)
+        .field("d_avg_percent", 100 * f.dAvg)
+        .field("sharp_points", f.sharpPoints)
+        .field("d_max_sharp_percent", 100 * f.dMaxSharp)
+        .field("d_avg_sharp_percent", 100 * f.dAvgSharp)
+        .field("seconds", f.seconds)
+        .endObject();
+    fitJson = j.str();
+    if (a.has("--cage-out")) writeFileAtomically(a.get("--cage-out"), formatCageObj(cage));
+    if (!a.has("--json"))
+      std::printf("fit to %s: d_max %.4f%%, d_avg %.5f%% of the target's diagonal (sharp regions: %.4f%%, %.5f%% over %d points), %.2f s\n",
+                  a.get("--fit").c_str(), 100 * f.dMax, 100 * f.dAvg, 100 * f.dMaxSharp, 100 * f.dAvgSharp, f.sharpPoints, f.seconds);
+  } else {
+    if (a.has("--cage-out")) throw Error("gnurbs: --cage-out needs --fit (the cage is only changed by fitting)");
+    r = buildG2Gnurbs(cage, o);
+  }
   const GnurbsBrep b = gnurbsToBrep(r);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const GnurbsContinuity c = measureGnurbsContinuity(r);
@@ -296,7 +351,9 @@ int cmdGnurbs(const Args& a) {
   writeShape(b.shape, out);
   writeFileAtomically(sidecar, b.sidecarJson + "\n");
   if (a.has("--json")) {
-    std::cout << gnurbsReportJson(r, c, &b, seconds) << "\n";
+    std::string report = gnurbsReportJson(r, c, &b, seconds);
+    if (!fitJson.empty()) report = report.substr(0, report.size() - 1) + ",\"fit\":" + fitJson + "}";
+    std::cout << report << "\n";
   } else {
     std::printf("cage: %d vertices, %d quads%s; %zu extraordinary points, %d faces in their 1-rings\n", static_cast<int>(r.cage.vertices.rows()),
                 static_cast<int>(r.cage.quads.rows()), r.refinements ? " after one Catmull-Clark step" : "", r.extraordinaryPoints.size(),

@@ -96,5 +96,32 @@ cp "$T/cage_valence5.obj" "$T/turn.obj"
 printf '# sharp 2 3\n# sharp 3 4\n# sharp 2 17\n# sharp 17 18\n# sharp 18 19\n' >>"$T/turn.obj"
 "$H" gnurbs "$T/turn.obj" --out "$T/turn.brep" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 3 ] && grep -q "crease turns at vertex 2" "$T/err"; then ok "turn: written, exit 3, $(cat "$T/err")"; else bad "turn: rc=$rc $(cat "$T/err")"; fi
+# Fitting: points of a wave over the valence-5 cage's disk; the fitted cage is written too.
+"$PY" - "$T/wave.xyz" <<'PY'
+import math, sys
+with open(sys.argv[1], "w") as f:
+    f.write("# x y z\n")
+    for i in range(41):
+        for j in range(41):
+            x, y = -2 + 4 * i / 40, -2 + 4 * j / 40
+            if x * x + y * y <= 4:
+                f.write("%.12g %.12g %.12g\n" % (x, y, 0.2 * math.sin(0.8 * x) * math.cos(0.6 * y)))
+PY
+if "$H" gnurbs "$T/cage_valence5.obj" --fit "$T/wave.xyz" --fit-rounds 4 --cage-out "$T/fitted.obj" --out "$T/fit.brep" --json \
+     >"$T/fit.json" 2>"$T/err"; then
+  "$PY" - "$T" <<'PY' && ok "fit to points: d_avg < 0.05%, fitted cage written" || bad "fit report: $(cat "$T/fit.json")"
+import json, sys
+t = sys.argv[1]
+r = json.load(open(t + "/fit.json"))
+f = r["fit"]
+assert f["points"] > 1000 and f["d_avg_percent"] < 0.05 and f["d_max_percent"] < 1.0, f
+assert r["continuity"]["g2_spokes"] < 1e-6, r["continuity"]
+lines = open(t + "/fitted.obj").read().split("\n")
+assert sum(1 for l in lines if l.startswith("f ")) == 45 and sum(1 for l in lines if l.startswith("v ")) == 61
+PY
+else bad "fit: $(cat "$T/err")"; fi
+printf '1 2 3\n4 nan 6\n' >"$T/bad.xyz"
+expect_error "NaN in the fitting target" "line 2" "$T/cage_valence5.obj" --fit "$T/bad.xyz"
+expect_error "cage-out without fit" "needs --fit" "$T/cage_valence5.obj" --cage-out "$T/x.obj"
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
