@@ -4,7 +4,7 @@ import FreeCADGui
 
 import HoleFillGui
 
-COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
+COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurface", "HoleFill_ImportCage", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
 
 
 class FillHoleCommand:
@@ -42,6 +42,58 @@ class FillMeshHolesCommand:
         except Exception as e:  # a core error on this mesh: say it, change nothing
             inspect_panels._message("Fill mesh holes failed: %s" % e)
             task_meshfill.remove_overlay()
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
+class GnurbsSurfaceCommand:
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon("HoleFill_Gnurbs.svg"),
+                "MenuText": "G-NURBS surface",
+                "ToolTip": "A curvature-continuous (G²) surface over a quad cage with extraordinary points.\n"
+                           "Select the cage (an object of quadrilateral faces), run, click edges to make them sharp,\n"
+                           "set anchors at extraordinary points; the surface follows the cage when it changes."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from HoleFillGui import inspect_panels, task_gnurbs
+        try:
+            panel = task_gnurbs.GnurbsPanel(task_gnurbs.cage_from_selection())
+        except task_gnurbs.SelectionError as e:
+            inspect_panels._message(str(e))
+            return
+        except Exception as e:  # not a quad cage, or a core error: say it, change nothing
+            inspect_panels._message("G-NURBS surface: %s" % e)
+            task_gnurbs.remove_overlay()
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
+class ImportCageCommand:
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon("HoleFill_Gnurbs.svg"),
+                "MenuText": "Import quad cage (OBJ)",
+                "ToolTip": "Read a quad cage from an OBJ file (with '# sharp i j', '# knot i j d', '# anchor i x y z'\n"
+                           "lines) as a shell of quads, and open G-NURBS surface on it with those marks."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from PySide2 import QtWidgets
+        from HoleFillGui import inspect_panels, task_gnurbs
+        import HoleFill
+        path, _ = QtWidgets.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), "Import quad cage", "", "OBJ cages (*.obj)")
+        if not path:
+            return
+        try:
+            obj, cage = HoleFill.importCage(path, FreeCAD.ActiveDocument)
+            FreeCADGui.SendMsgToActiveView("ViewFit")
+            panel = task_gnurbs.GnurbsPanel(obj, cage["sharpEdges"], cage["anchors"], cage["knots"])
+        except Exception as e:
+            inspect_panels._message("Import quad cage: %s" % e)
             return
         FreeCADGui.Control.showDialog(panel)
 
@@ -103,6 +155,8 @@ class ContinuityCheckCommand(_InspectCommand):
 def register():
     FreeCADGui.addCommand("HoleFill_FillHole", FillHoleCommand())
     FreeCADGui.addCommand("HoleFill_FillMeshHoles", FillMeshHolesCommand())
+    FreeCADGui.addCommand("HoleFill_GnurbsSurface", GnurbsSurfaceCommand())
+    FreeCADGui.addCommand("HoleFill_ImportCage", ImportCageCommand())
     FreeCADGui.addCommand("HoleFill_CurvatureMap", CurvatureMapCommand())
     FreeCADGui.addCommand("HoleFill_ZebraStripes", ZebraStripesCommand())
     FreeCADGui.addCommand("HoleFill_ContinuityCheck", ContinuityCheckCommand())

@@ -15,7 +15,8 @@ import json
 
 import HoleFillApp
 
-__all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature"]
+__all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature", "cageShell", "importCage",
+           "extraordinaryPoints"]
 
 
 def _shape(brep):
@@ -80,7 +81,8 @@ def cageFromShape(shape, tolerance=None):
         return index[key]
 
     quads = []
-    for n, face in enumerate(shape.Faces, 1):
+    faces = shape.Faces
+    for n, face in enumerate(faces, 1):
         wire = face.OuterWire
         verts = [v.Point for v in wire.OrderedVertexes]
         if len(verts) != 4:
@@ -92,7 +94,62 @@ def cageFromShape(shape, tolerance=None):
         quads.append(ids)
     # Orient every quad like the first one, across shared edges (a cage from an unoriented compound).
     quads = _orientConsistently(quads)
-    return {"vertices": points, "quads": quads, "knots": [], "sharpEdges": [], "anchors": {}}
+    # The cage edge behind each edge of the shape (EdgeK names, as FreeCAD's selection gives them).
+    shapeEdges = {}
+    for n, edge in enumerate(shape.Edges, 1):
+        if len(edge.Vertexes) == 2:
+            a, b = vid(edge.Vertexes[0].Point), vid(edge.Vertexes[1].Point)
+            if a != b:
+                shapeEdges["Edge%d" % n] = (min(a, b), max(a, b))
+    return {"vertices": points, "quads": quads, "knots": [], "sharpEdges": [], "anchors": {}, "shapeEdges": shapeEdges}
+
+
+def extraordinaryPoints(cage):
+    """{vertex: valence} of the cage's interior vertices whose valence is not 4."""
+    uses, nbr = {}, {}
+    for q in cage["quads"]:
+        for k in range(4):
+            a, b = int(q[k]), int(q[(k + 1) % 4])
+            e = (min(a, b), max(a, b))
+            uses[e] = uses.get(e, 0) + 1
+            nbr.setdefault(a, set()).add(b)
+            nbr.setdefault(b, set()).add(a)
+    boundary = {v for e, n in uses.items() if n == 1 for v in e}
+    return {v: len(ns) for v, ns in nbr.items() if v not in boundary and len(ns) != 4}
+
+
+def cageShell(cage):
+    """The cage as a Part shell of bilinear (ruled) quads: how a cage read from a file is shown
+    and edited in FreeCAD (its vertices and quads come back unchanged through cageFromShape)."""
+    import FreeCAD
+    import Part
+    v = [FreeCAD.Vector(*[float(c) for c in p]) for p in cage["vertices"]]
+    faces = [Part.makeRuledSurface(Part.makeLine(v[int(a)], v[int(b)]), Part.makeLine(v[int(d)], v[int(c)]))
+             for a, b, c, d in cage["quads"]]
+    return Part.makeShell(faces)
+
+
+def importCage(path, doc=None, name="Cage"):
+    """Reads a quad cage OBJ into a new Part::Feature of `doc` (the active document by default);
+    returns (object, cage dict): its sharp edges and anchors (from '# sharp' / '# anchor' lines)
+    numbered as cageFromShape numbers the object's shape."""
+    import FreeCAD
+    doc = doc or FreeCAD.ActiveDocument or FreeCAD.newDocument()
+    cage = readCage(path)
+    shell = cageShell(cage)
+    back = cageFromShape(shell)
+    # Renumber the file's sharp edges and anchors through positions (the shape's numbering).
+    index = {tuple(round(c, 9) for c in p): i for i, p in enumerate(back["vertices"])}
+    to = [index[tuple(round(float(c), 9) for c in p)] for p in cage["vertices"]]
+    back["sharpEdges"] = [(to[a], to[b]) for a, b in cage["sharpEdges"]]
+    back["anchors"] = {to[i]: p for i, p in cage["anchors"].items()}
+    back["knots"] = [(to[a], to[b], d) for a, b, d in cage["knots"]]
+    doc.openTransaction("Import quad cage")
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = shell
+    doc.commitTransaction()
+    doc.recompute()
+    return obj, back
 
 
 def _orientConsistently(quads):
@@ -144,6 +201,7 @@ class GnurbsFeature:
         add("App::PropertyLink", "Source", "G-NURBS", "Object whose faces are the quad cage")
         add("App::PropertyStringList", "SharpEdges", "G-NURBS", "Crease edges as 'i-j' (cage vertices, 0-based)")
         add("App::PropertyStringList", "Anchors", "G-NURBS", "Anchors as 'i: x y z' at sharp extraordinary points")
+        add("App::PropertyStringList", "Knots", "G-NURBS", "Knot intervals as 'i-j: d' (default 1)")
         add("App::PropertyBool", "Refine", "G-NURBS", "Refine the cage once when its EPs are too close")
         for name, doc in (("Report", "construction and continuity report (JSON)"), ("Status", "ok, or the warnings")):
             add("App::PropertyString", name, "Report", doc)
@@ -164,7 +222,13 @@ class GnurbsFeature:
         for a in obj.Anchors:
             head, rest = a.split(":")
             anchors[int(head)] = tuple(float(x) for x in rest.split())
-        shell, report = gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=sharp, anchors=anchors, refine=obj.Refine)
+        knots = []
+        for k in (obj.Knots if hasattr(obj, "Knots") else []):
+            edge, d = k.split(":")
+            a, b = edge.split("-")
+            knots.append((int(a), int(b), float(d)))
+        shell, report = gnurbsSurface(cage["vertices"], cage["quads"], knots=knots, sharpEdges=sharp, anchors=anchors,
+                                      refine=obj.Refine)
         obj.Shape = shell
         obj.G1 = report["continuity"]["g1_spokes"]
         obj.G2 = report["continuity"]["g2_spokes"]
@@ -178,7 +242,7 @@ class GnurbsFeature:
         return None
 
 
-def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs"):
+def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs", knots=()):
     """A parametric G-NURBS surface over `source` (a document object with quad faces) in one undo
     transaction; the source is only read. Returns the new object, or raises with nothing added."""
     import FreeCAD
@@ -194,6 +258,7 @@ def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs"):
         obj.SharpEdges = ["%d-%d" % (int(a), int(b)) for a, b in sharpEdges]
         obj.Anchors = ["%d: %r %r %r" % (int(i), float(p[0]), float(p[1]), float(p[2])) for i, p in (anchors or {}).items()]
         obj.Refine = bool(refine)
+        obj.Knots = ["%d-%d: %r" % (int(a), int(b), float(d)) for a, b, d in knots]
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
         doc.recompute()
