@@ -8,6 +8,8 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
+from HoleFillGui import scene_overlay
+
 OVERLAY = "HoleFillGnurbsCage"
 COLOR_SHARP, COLOR_EP, COLOR_ANCHOR = (1.0, 0.55, 0.1), (0.9, 0.0, 0.0), (0.1, 0.3, 1.0)
 
@@ -27,12 +29,7 @@ def cage_from_selection():
 
 
 def remove_overlay():
-    if not FreeCAD.GuiUp or FreeCADGui.ActiveDocument is None:
-        return
-    root = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
-    for i in reversed(range(root.getNumChildren())):
-        if root.getChild(i).getName().getString().startswith(OVERLAY):
-            root.removeChild(i)
+    scene_overlay.remove(OVERLAY)
 
 
 class _EdgeClicks:
@@ -135,16 +132,7 @@ class GnurbsPanel:
         for a, b in sorted(self.sharp):
             self.sharpList.addItem("%d-%d" % (a, b))
         pts = self.cage["vertices"]
-        root = coin.SoSeparator()
-        root.setName("%s_%s" % (OVERLAY, self.obj.Name))
-        m = self.obj.Placement.toMatrix()
-        xf = coin.SoMatrixTransform()
-        xf.matrix.setValue(coin.SbMatrix(*[m.A[4 * c + r] for r in range(4) for c in range(4)]))
-        root.addChild(xf)
-        pick = coin.SoPickStyle()
-        pick.style = coin.SoPickStyle.UNPICKABLE  # clicks go through to the cage's own edges
-        root.addChild(pick)
-        root.addChild(coin.SoPolygonOffset())
+        root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)
         if self.sharp:
             sep = coin.SoSeparator()
             sep.setName(OVERLAY + "_sharp")
@@ -176,7 +164,7 @@ class GnurbsPanel:
             for n in (col, style, coords, coin.SoPointSet()):
                 sep.addChild(n)
             root.addChild(sep)
-        FreeCADGui.ActiveDocument.ActiveView.getSceneGraph().addChild(root)
+        scene_overlay.show(root)
         self.status.setText("%d sharp edges, %d anchors. OK builds the G² surface as a new object." % (len(self.sharp), len(anchors)))
 
     # -- dialog ------------------------------------------------------------------------------

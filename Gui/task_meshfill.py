@@ -7,6 +7,8 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
+from HoleFillGui import scene_overlay
+
 OVERLAY = "HoleFillMeshHoles"
 COLOR_FILL, COLOR_SKIP, COLOR_PICKED = (1.0, 0.55, 0.1), (0.55, 0.55, 0.55), (0.9, 0.0, 0.0)
 
@@ -31,12 +33,7 @@ def mesh_from_selection():
 
 
 def remove_overlay():
-    if not FreeCAD.GuiUp or FreeCADGui.ActiveDocument is None:
-        return
-    root = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
-    for i in reversed(range(root.getNumChildren())):
-        if root.getChild(i).getName().getString().startswith(OVERLAY):
-            root.removeChild(i)
+    scene_overlay.remove(OVERLAY)
 
 
 class MeshFillPanel:
@@ -113,17 +110,7 @@ class MeshFillPanel:
         remove_overlay()
         picked = {i.row() for i in self.table.selectedIndexes()}
         checked = set(self.checked())
-        root = coin.SoSeparator()
-        root.setName("%s_%s" % (OVERLAY, self.obj.Name))
-        m = self.obj.Placement.toMatrix()
-        xf = coin.SoMatrixTransform()
-        xf.matrix.setValue(coin.SbMatrix(*[m.A[4 * c + r] for r in range(4) for c in range(4)]))
-        root.addChild(xf)
-        pick = coin.SoPickStyle()
-        pick.style = coin.SoPickStyle.UNPICKABLE
-        root.addChild(pick)
-        offset = coin.SoPolygonOffset()
-        root.addChild(offset)
+        root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)
         for r, hole in enumerate(self.holes):
             sep = coin.SoSeparator()
             sep.setName("%s_hole%d" % (OVERLAY, hole["index"]))
@@ -140,7 +127,7 @@ class MeshFillPanel:
             for n in (mat, style, coords, lines):
                 sep.addChild(n)
             root.addChild(sep)
-        FreeCADGui.ActiveDocument.ActiveView.getSceneGraph().addChild(root)
+        scene_overlay.show(root)
         self.status.setText("%d of %d holes will be filled into a new mesh object." % (len(checked), len(self.holes)))
 
     def getStandardButtons(self):

@@ -7,10 +7,14 @@
 namespace holefill {
 
 GnurbsContinuity measureGnurbsContinuity(const G2GnurbsResult& result, int samplesPerEdge) {
-  const Eigen::MatrixX3d& V = result.cage.vertices;
+  return measureCageContinuity(result.cage, faceJets(result), samplesPerEdge);
+}
+
+GnurbsContinuity measureCageContinuity(const QuadCage& cage, const FaceJetFunction& jet, int samplesPerEdge) {
+  const Eigen::MatrixX3d& V = cage.vertices;
   const double diagonal = std::max((V.colwise().maxCoeff() - V.colwise().minCoeff()).norm(), 1e-300);
   GnurbsContinuity c;
-  for (const auto& e : cageEdgeContinuity(result.cage, CageTopology(result.cage), faceJets(result), samplesPerEdge, diagonal)) {
+  for (const auto& e : cageEdgeContinuity(cage, CageTopology(cage), jet, samplesPerEdge, diagonal)) {
     ++c.edges;
     c.g0 = std::max(c.g0, e.g0 / diagonal);
     c.singularSamples += e.singularSamples;

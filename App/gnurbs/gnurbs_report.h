@@ -19,6 +19,8 @@ struct GnurbsContinuity {
   int singularSamples = 0;
 };
 
+// Over any surface on the cage given by its face jets (ours, or a peer's for the benchmark).
+GnurbsContinuity measureCageContinuity(const QuadCage& cage, const FaceJetFunction& jet, int samplesPerEdge = 21);
 GnurbsContinuity measureGnurbsContinuity(const G2GnurbsResult& result, int samplesPerEdge = 21);
 
 std::string gnurbsReportJson(const G2GnurbsResult& result, const GnurbsContinuity& continuity, const GnurbsBrep* brep,

@@ -18,6 +18,7 @@
 #include "gnurbs/g2_gnurbs.h"
 #include "gnurbs/gnurbs_brep.h"
 #include "gnurbs/gnurbs_fit.h"
+#include "gnurbs/gnurbs_report.h"
 #include "gnurbs/patch_continuity.h"
 #include "gnurbs/sample_cages.h"
 
@@ -102,29 +103,6 @@ struct OsdLimit {
     return SurfaceJet{out[0], out[1], out[2], out[3], out[4], out[5]};
   }
 };
-
-struct Row {
-  double g1EP = 0, g2EP = 0, g1 = 0, g2 = 0, kEP = 0;
-  int singular = 0;
-};
-
-Row measure(const QuadCage& cage, const FaceJetFunction& jet) {
-  const double diag = (cage.vertices.colwise().maxCoeff() - cage.vertices.colwise().minCoeff()).norm();
-  Row r;
-  for (const auto& e : cageEdgeContinuity(cage, CageTopology(cage), jet, 51, diag)) {
-    r.singular += e.singularSamples;
-    if (e.sharp) continue;
-    if (e.nearEP) {
-      r.g1EP = std::max(r.g1EP, e.g1);
-      r.g2EP = std::max(r.g2EP, e.g2);
-      r.kEP = std::max(r.kEP, e.maxCurvature * diag);
-    } else {
-      r.g1 = std::max(r.g1, e.g1);
-      r.g2 = std::max(r.g2, e.g2);
-    }
-  }
-  return r;
-}
 
 double seconds(const std::function<void()>& f, int repeats = 3) {
   double best = 1e300;
@@ -287,18 +265,18 @@ int main(int argc, char** argv) {
     try {
       G2GnurbsResult r;
       const double t = seconds([&] { r = buildG2Gnurbs(c.cage); });
-      const Row m = measure(r.cage, faceJets(r));
+      const GnurbsContinuity m = measureCageContinuity(r.cage, faceJets(r), 51);
       std::printf("| %s | HoleFill G² G-NURBS%s | %.1e | %.1e | %.1e | %.1e | %.3g | %.1f |\n", c.name.c_str(),
-                  r.refinements ? " (refined once)" : "", m.g1EP, m.g2EP, m.g1, m.g2, m.kEP, 1e3 * t);
+                  r.refinements ? " (refined once)" : "", m.g1Spokes, m.g2Spokes, m.g1Elsewhere, m.g2Elsewhere, m.maxCurvatureNearEPs, 1e3 * t);
     } catch (const Error& e) {
       std::printf("| %s | HoleFill G² G-NURBS | refused: %s | | | | | |\n", c.name.c_str(), e.what());
     }
     try {
       std::unique_ptr<OsdLimit> osd;
       const double t = seconds([&] { osd.reset(new OsdLimit(c.cage, isolation)); });
-      const Row m = measure(c.cage, [&](int f, double u, double v) { return osd->jet(f, u, v); });
+      const GnurbsContinuity m = measureCageContinuity(c.cage, [&](int f, double u, double v) { return osd->jet(f, u, v); }, 51);
       std::printf("| | OpenSubdiv limit, Gregory end caps, isolation %d%s | %.1e | %.1e | %.1e | %.1e | %.3g | %.1f |\n", isolation,
-                  nonUniform(c.cage) ? " (ignores knot intervals)" : "", m.g1EP, m.g2EP, m.g1, m.g2, m.kEP, 1e3 * t);
+                  nonUniform(c.cage) ? " (ignores knot intervals)" : "", m.g1Spokes, m.g2Spokes, m.g1Elsewhere, m.g2Elsewhere, m.maxCurvatureNearEPs, 1e3 * t);
     } catch (const std::exception& e) {
       std::printf("| | OpenSubdiv | failed: %s | | | | | |\n", e.what());
     }
@@ -312,10 +290,10 @@ int main(int argc, char** argv) {
   for (int n : {5, 6, 8}) {
     const QuadCage cage = cages::polarCage(n, 4);
     const G2GnurbsResult r = buildG2Gnurbs(cage);
-    std::printf("| %d | %.3g |", n, measure(r.cage, faceJets(r)).kEP);
+    std::printf("| %d | %.3g |", n, measureCageContinuity(r.cage, faceJets(r), 51).maxCurvatureNearEPs);
     for (int iso : {2, 4, 6, 8}) {
       const OsdLimit osd(cage, iso);
-      std::printf(" %.3g |", measure(cage, [&](int f, double u, double v) { return osd.jet(f, u, v); }).kEP);
+      std::printf(" %.3g |", measureCageContinuity(cage, [&](int f, double u, double v) { return osd.jet(f, u, v); }, 51).maxCurvatureNearEPs);
     }
     std::printf("\n");
   }

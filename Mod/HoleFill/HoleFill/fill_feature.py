@@ -90,10 +90,7 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
         if not holes:
             raise HoleFill.HoleFillError("%s has no holes" % source.Label)
         edges = holes[0]["edges"][:1]
-    doc.openTransaction("Fill hole")
-    obj = None
-    try:
-        obj = doc.addObject("Part::FeaturePython", "Fill")
+    def setup(obj):
         FillFeature(obj)
         obj.Source = (source, list(edges))
         obj.Method = method
@@ -104,14 +101,6 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
         if FreeCAD.GuiUp:
             from HoleFillGui import view_provider
             view_provider.FillViewProvider(obj.ViewObject)
-        doc.recompute()
-        if not obj.isValid():
-            raise HoleFill.HoleFillError("the fill failed: %s" % (obj.getStatusString() or "see the report view"))
-    except Exception:
-        # Leave the document exactly as it was, with or without undo enabled.
-        if obj is not None and doc.getObject(obj.Name) is not None:
-            doc.removeObject(obj.Name)
-        doc.abortTransaction()
-        raise
-    doc.commitTransaction()
-    return obj
+
+    from HoleFill.transaction import addParametric
+    return addParametric(doc, "Fill hole", "Fill", setup, "the fill")

@@ -248,11 +248,8 @@ def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs", 
     import FreeCAD
     if source is None or not hasattr(source, "Shape"):
         raise HoleFillApp.HoleFillError("makeGnurbs needs a document object with a shape as source")
-    doc = source.Document
-    doc.openTransaction("G-NURBS surface")
-    obj = None
-    try:
-        obj = doc.addObject("Part::FeaturePython", name)
+
+    def setup(obj):
         GnurbsFeature(obj)
         obj.Source = source
         obj.SharpEdges = ["%d-%d" % (int(a), int(b)) for a, b in sharpEdges]
@@ -261,13 +258,6 @@ def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs", 
         obj.Knots = ["%d-%d: %r" % (int(a), int(b), float(d)) for a, b, d in knots]
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
-        doc.recompute()
-        if not obj.isValid():
-            raise HoleFillApp.HoleFillError("the G-NURBS surface failed: %s" % (obj.getStatusString() or "see the report view"))
-    except Exception:
-        if obj is not None and doc.getObject(obj.Name) is not None:
-            doc.removeObject(obj.Name)
-        doc.abortTransaction()
-        raise
-    doc.commitTransaction()
-    return obj
+
+    from HoleFill.transaction import addParametric
+    return addParametric(source.Document, "G-NURBS surface", name, setup, "the G-NURBS surface")

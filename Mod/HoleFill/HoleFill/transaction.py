@@ -1,0 +1,24 @@
+"""Adding a parametric object in one undo step, or not at all: the document is left exactly as
+it was when building it fails or the object does not compute (with or without undo enabled)."""
+import HoleFillApp
+
+
+def addParametric(doc, title, name, setup, what):
+    """New Part::FeaturePython `name` in `doc` under the undo title `title`; setup(obj) attaches
+    the proxy and sets the properties. `what` names the object in the error raised when its
+    recompute fails."""
+    doc.openTransaction(title)
+    obj = None
+    try:
+        obj = doc.addObject("Part::FeaturePython", name)
+        setup(obj)
+        doc.recompute()
+        if not obj.isValid():
+            raise HoleFillApp.HoleFillError("%s failed: %s" % (what, obj.getStatusString() or "see the report view"))
+    except Exception:
+        if obj is not None and doc.getObject(obj.Name) is not None:
+            doc.removeObject(obj.Name)
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+    return obj
