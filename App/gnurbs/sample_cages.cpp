@@ -147,6 +147,15 @@ QuadCage cubeCage() {
   return c;
 }
 
+void setSharpSpokeLine(QuadCage& polar, int k, int spoke) {
+  int prev = 0;
+  for (int a = 1; a <= k; ++a) {
+    const int v = 1 + spoke * k + (a - 1);  // polarCage's numbering of spoke vertices
+    polar.setSharp(prev, v);
+    prev = v;
+  }
+}
+
 std::vector<std::string> sampleCageNames() { return {"cage_valence3", "cage_valence5", "cage_valence8", "cage_adjacent_3_5", "cage_cube"}; }
 
 QuadCage sampleCage(const std::string& name) {

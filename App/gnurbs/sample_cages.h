@@ -19,6 +19,9 @@ double height(double x, double y);
 // interval(s, j): knot interval of the j-th edge out along spoke s and of every edge parallel to it.
 QuadCage polarCage(int n, int k, const std::function<double(int, int)>& interval = [](int, int) { return 1.0; });
 
+// Marks spoke line `spoke` of polarCage(n, k) sharp, from the EP (vertex 0) to the cage boundary.
+void setSharpSpokeLine(QuadCage& polar, int k, int spoke);
+
 // A disk of quads around edge 0-1 whose ends are EPs of valence nA (vertex 0) and nB (vertex 1),
 // every other interior vertex regular: the star of the edge, then `rings` rings of quads (a
 // polygon vertex inside one quad gets a corner quad, one inside two gets none, so every

@@ -165,16 +165,6 @@ Eigen::MatrixX3d targetOver(const QuadCage& cage, const std::function<double(dou
   return out;
 }
 
-void sharpSpokeLines(QuadCage& c, int k, std::initializer_list<int> spokes) {
-  for (int sp : spokes) {
-    int prev = 0;
-    for (int a = 1; a <= k; ++a) {
-      c.setSharp(prev, 1 + sp * k + a - 1);
-      prev = 1 + sp * k + a - 1;
-    }
-  }
-}
-
 void fittingTable() {
   struct Target {
     std::string name;
@@ -186,13 +176,13 @@ void fittingTable() {
                      [](double x, double y) { return 0.3 * std::sin(0.6 * x) * std::cos(0.5 * y) + 0.02 * x * y; }});
   {
     QuadCage c = cages::polarCage(6, 3);
-    sharpSpokeLines(c, 3, {0, 3});
+    for (int sp : {0, 3}) cages::setSharpSpokeLine(c, 3, sp);
     targets.push_back({"ridge through a valence-6 EP (creases on 2 spokes)", c,
                        [](double x, double y) { return 0.6 - 0.3 * std::abs(y) + 0.02 * x * x; }});
   }
   {
     QuadCage c = cages::polarCage(6, 3);
-    sharpSpokeLines(c, 3, {0, 2, 4});
+    for (int sp : {0, 2, 4}) cages::setSharpSpokeLine(c, 3, sp);
     targets.push_back({"three-sided corner at a valence-6 EP (creases on 3 spokes)", c, [](double x, double y) {
                          double m = -1e9;
                          for (double a : {M_PI / 3, M_PI, 5 * M_PI / 3}) m = std::max(m, std::cos(a) * x + std::sin(a) * y);
@@ -243,13 +233,7 @@ int main(int argc, char** argv) {
   {
     // Creases along spoke lines 0 and 2 from the cage boundary through the EP: a sharp EP.
     QuadCage c = cages::polarCage(5, 3);
-    for (int s : {0, 2}) {
-      int prev = 0;
-      for (int a = 1; a <= 3; ++a) {
-        c.setSharp(prev, 1 + 3 * s + a - 1);
-        prev = 1 + 3 * s + a - 1;
-      }
-    }
+    for (int sp : {0, 2}) cages::setSharpSpokeLine(c, 3, sp);
     cases.push_back({"crease through an EP (valence 5)", c});
     c.anchors[0] = Eigen::Vector3d(0, 0, 0.8);
     cases.push_back({"crease through an anchored EP (valence 5)", c});

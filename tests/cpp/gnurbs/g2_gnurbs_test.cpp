@@ -152,20 +152,6 @@ TEST(G2Gnurbs, RegularCageIsTheBicubicSplineAndSymmetricCagesGiveSymmetricSurfac
   }
 }
 
-namespace {
-
-// Sharp edges along spoke lines of a polar cage: spoke s from the EP (vertex 0) to the boundary.
-void sharpSpokeLine(QuadCage& c, int n, int k, int s) {
-  (void)n;
-  int prev = 0;
-  for (int a = 1; a <= k; ++a) {
-    const int v = 1 + s * k + (a - 1);
-    c.setSharp(prev, v);
-    prev = v;
-  }
-}
-
-}  // namespace
 
 TEST(G2Gnurbs, CreasesThroughEPsStayC0AndEverythingElseG2) {
   // A dart (one sharp spoke), a crease through the EP with 2 and 3 faces on its sides, a corner
@@ -180,7 +166,7 @@ TEST(G2Gnurbs, CreasesThroughEPsStayC0AndEverythingElseG2) {
     for (int s : c.spokes) name += " " + std::to_string(s);
     SCOPED_TRACE(name);
     QuadCage cage = polarCage(c.n, 3);
-    for (int s : c.spokes) sharpSpokeLine(cage, c.n, 3, s);
+    for (int s : c.spokes) cages::setSharpSpokeLine(cage, 3, s);
     const G2GnurbsResult r = buildG2Gnurbs(cage);
     EXPECT_EQ(r.refinements, 0);
     EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
@@ -219,8 +205,8 @@ TEST(G2Gnurbs, CreasesThroughEPsStayC0AndEverythingElseG2) {
 
 TEST(G2Gnurbs, AnAnchorPlacesItsSharpEPAndChangesOnlyTheEPsNeighbourhood) {
   QuadCage cage = polarCage(5, 3);
-  sharpSpokeLine(cage, 5, 3, 0);
-  sharpSpokeLine(cage, 5, 3, 2);
+  cages::setSharpSpokeLine(cage, 3, 0);
+  cages::setSharpSpokeLine(cage, 3, 2);
   const G2GnurbsResult plain = buildG2Gnurbs(cage);
   cage.anchors[0] = Eigen::Vector3d(0.1, -0.05, 0.9);  // pull the sharp EP up: a peak
   const G2GnurbsResult anchored = buildG2Gnurbs(cage);

@@ -26,9 +26,7 @@ Eigen::MatrixX3d samplesOf(const G2GnurbsResult& s, int perPatch, unsigned seed)
 
 TEST(GnurbsFit, ReproducesAGnurbsSurfaceFromAPerturbedCage) {
   QuadCage truth = polarCage(5, 3);
-  truth.setSharp(0, 1);  // a sharp EP with an anchor: anchors are fitted too
-  truth.setSharp(1, 2);
-  truth.setSharp(2, 3);
+  cages::setSharpSpokeLine(truth, 3, 0);  // a sharp EP with an anchor: anchors are fitted too
   truth.anchors[0] = Eigen::Vector3d(0.05, -0.02, 0.35);
   const Eigen::MatrixX3d target = samplesOf(buildG2Gnurbs(truth), 12, 1);
   QuadCage start = truth;
