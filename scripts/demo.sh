@@ -2,7 +2,8 @@
 # The main job on a fresh Debian 12 machine: install what is missing, build, install the
 # workbench, fill the bundled sample holes headless with freecadcmd, and write to demo-out/:
 # the filled models (.FCStd, .step), a continuity report per hole (.json + the printed
-# table) and a picture of each result (.png, rendered by FreeCAD under Xvfb).
+# table) and a picture of each result (.png, rendered by FreeCAD under Xvfb); and G² G-NURBS
+# surfaces over the bundled quad cages in demo-out/gnurbs/ (.step, .faces.json, .json, zebra .png).
 set -euo pipefail
 . "$(dirname "$0")/prepare.sh"
 ./scripts/install.sh
@@ -20,5 +21,15 @@ rm -rf "$out" && mkdir -p "$out"
   ls "$out"/*.png >/dev/null 2>&1 || { echo "[demo] rendering failed:"; tail -20 "$HOME/render.log"; exit 1; }
   rm -rf "$HOME"
 )
+# G² G-NURBS surfaces over the bundled quad cages (CLI): shells, face sidecars, reports, zebra pictures.
+mkdir -p "$out/gnurbs"
+cages=$(mktemp -d)
+"$build/App/holefill" samples "$cages" | grep 'cage_.*\.obj$' | while read -r cage; do
+  name=$(basename "$cage" .obj)
+  "$build/App/holefill" gnurbs "$cage" --out "$out/gnurbs/$name.step" --json >"$out/gnurbs/$name.json"
+  "$build/App/holefill" render "$out/gnurbs/$name.step" --mode zebra --out "$out/gnurbs/$name.png" --size 800x600 >/dev/null
+  /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); c=r["continuity"]; print("[demo] G-NURBS %-18s %3d faces, EPs %s: spokes G1 %.1e rad G2 %.1e, %.2f s" % (sys.argv[2], r["brep"]["faces"], r["extraordinary_points"], c["g1_spokes"], c["g2_spokes"], r["seconds"]))' "$out/gnurbs/$name.json" "$name"
+done
+cp "$cages"/cage_*.obj "$out/gnurbs/" && rm -rf "$cages"
 echo "[demo] results in $out:"
 ls -1 "$out"
