@@ -21,9 +21,9 @@
 // carries a warning with the residual. Adjacent EPs share one problem (sec. 3.2.2) rather than
 // the paper's two decoupled ones; a pair is at most 2N−2 faces. Their shared spoke uses a
 // connection of our own (spoke_conditions.h): G² holds exactly; the tangent star at an EP next
-// to another is less round than the guidance's (σ₂/σ₁ 0.29 of the guidance's 0.99 at a valence-3
-// EP next to a valence-5 one with the fair solve, 0.55 with the stepwise one); a Catmull–Clark
-// step separates such EPs when that matters.
+// to another can be less round than the guidance's (σ₂/σ₁ 0.60 against the guidance's 0.99 at a
+// valence-3 EP next to a valence-5 one); a Catmull–Clark step separates such EPs when that
+// matters.
 // Sharp edges make C0 creases. At an EP with sharp spokes (a sharp EP) the smooth spokes keep
 // their G² conditions and the crease rows are the guidance's crease curves, which the
 // extraction ends at the EP as at a corner; the EP sits at its cage vertex, or at its anchor
@@ -47,8 +47,8 @@ struct G2GnurbsOptions {
   // How the free coefficients of an EP's 1-ring are chosen, under the same exact constraints:
   //   Fair (default): one solve minimising the thin-plate energy of the change from the
   //     guidance surface over all 1-ring faces. Measured against Stepwise on the sample polar
-  //     cages: max |mean curvature| in the 1-ring 0.48 against 1.42 at valence 8 and 0.25
-  //     against 0.75 at valence 5; the stepwise red/green/blue fit freezes the low-degree EP half
+  //     cages: max |mean curvature| in the 1-ring 0.39 against 1.03 at valence 8 and 0.27
+  //     against 0.48 at valence 5; the stepwise red/green/blue fit freezes the low-degree EP half
   //     of each spoke before the rest is seen and leaves a curvature dipole just past the
   //     spoke's middle. Tangent stars at isolated EPs are the guidance's in both.
   //   Stepwise: the paper's sec. 4.1 steps as described above.

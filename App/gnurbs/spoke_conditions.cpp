@@ -10,8 +10,8 @@ double eigenPolyhedronB(int valence) { return 2 * std::cos(2 * M_PI / valence); 
 
 double connectionRho(int valence) {
   if (valence == 3) return valence3Rho(isolatedBetaSlope(eigenPolyhedronB(3)));
-  if (valence <= 5) return 1;
-  static const double measured[] = {-5.5, -5, -4.75, -4.75, -5, -5.25, -5.25, -5.375, -5.4, -5.5, -5.6};  // valence 6..16
+  if (valence <= 5) return 0.25;
+  static const double measured[] = {-5, -4.25, -4.5, -4.75, -5, -5.25, -5.25, -5.375, -5.4, -5.5, -5.6};  // valence 6..16
   return valence <= 16 ? measured[valence - 6] : -5.7;
 }
 

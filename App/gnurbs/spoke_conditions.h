@@ -82,10 +82,12 @@ struct SpokeConnection {
 // valence 3 (valence3Rho) and folds the surface at valence 7 and above: measured on the planar
 // regular N-sided polar cage, whose surface should stay an injective map with the regular
 // star's angle sin(2π/N) as its smallest, r = 1 keeps that only up to valence 5 (valence 6:
-// 0.77 against 0.87; valence 7-10 fold), and for N ≥ 6 the r that keep it form a window that
-// narrows with N (N = 6: [-6.75, -4], 7: [-6, -3.75], 8: [-5.5, -4],
-// 10: [-5.25, -4.75], 12: [-5.55, -5], 16: [-5.7, -5.45], 20: ≤ -5.65). The table takes the
-// window's middle up to valence 16 and -5.7 beyond (checked at 20 only).
+// 0.67 against 0.87; valence 7-10 fold). The r that keep it form a window per valence (N = 5:
+// [0, 1], 6: [-6.5, -4.75], 7: [-6.5, -4], 8: [-6.5, -4.25], 9: [-6.5, -4.5], 10: [-6.25, -4.75],
+// 12: [-5.55, -5], 16: [-5.7, -5.45], 20: ≤ -5.65), and inside it the curvature next to the EP
+// falls as r grows (on the curved polar cage with 4 rings, max |κ| × diagonal: valence 5 6.5 at
+// r = 1, 2.3 at 0.25; valence 8 32 at -5.5, 8.9 at -4.5). The table takes one step of 0.25
+// inside the window's upper end up to valence 11, the middle beyond, and -5.7 past valence 16.
 double connectionRho(int valence);
 
 // The slope β'(0) per half-spoke parameter that every spoke of a valence-3 EP with a regular

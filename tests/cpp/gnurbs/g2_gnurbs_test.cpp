@@ -147,7 +147,7 @@ TEST(G2Gnurbs, RegularCageIsTheBicubicSplineAndSymmetricCagesGiveSymmetricSurfac
           worst = std::max(worst, (R * p - q).norm());
           moved = std::max(moved, (p - q).norm());
         }
-    EXPECT_LT(worst, 1e-8);  // measured 1.4e-9 at most (valence 3, 5, 6): round-off of the stepwise solves
+    EXPECT_LT(worst, 1e-7);  // measured 3.8e-8 at most (valence 3, 5, 6): round-off of the solves
     EXPECT_GT(moved, 0.5);  // the comparison is between different places
   }
 }
@@ -245,8 +245,8 @@ TEST(G2Gnurbs, TwoAdjacentEPsAreG2AcrossEveryEdge) {
     EXPECT_LT(w.g1, 1e-8);
     EXPECT_LT(w.g2, 1e-6);
     EXPECT_EQ(w.singular, 0);
-    // Measured 0.29 (the valence-3 EP of 3+5) to 1.08 of the guidance's anisotropy.
-    for (int v : {0, 1}) expectTangentPlaneAt(r, v, 0.25);
+    // Measured 0.60 (the valence-3 EP of 3+5) to 1.04 of the guidance's anisotropy.
+    for (int v : {0, 1}) expectTangentPlaneAt(r, v, 0.5);
   }
 }
 
@@ -345,7 +345,7 @@ TEST(G2Gnurbs, FairSolveKeepsCurvatureNearTheGuidanceAndStepwiseMeetsTheSameCond
     EXPECT_LT(wp.g1, 1e-8);
     EXPECT_LT(wp.g2, 1e-6);
     EXPECT_LT(wf.g2, 1e-6);
-    EXPECT_LT(hf, 0.7 * hp);  // measured 0.25 against 0.75 (valence 5) and 0.48 against 1.42 (valence 8)
+    EXPECT_LT(hf, 0.7 * hp);  // measured 0.27 against 0.48 (valence 5) and 0.39 against 1.03 (valence 8)
   }
   const G2GnurbsResult pair = buildG2Gnurbs(edgeStarCage(5, 6, 2), stepwise);
   EXPECT_LT(worstContinuity(pair).g2, 1e-6);
