@@ -57,7 +57,7 @@ const char* kUsage =
     "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
     "  holefill mesh-holes MESH [--json]\n"
     "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine]\n"
-    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--json]\n"
+    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--merge-regular] [--json]\n"
     "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
@@ -75,7 +75,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine"};  // --no-refine: mesh-fill and gnurbs
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -344,7 +344,9 @@ int cmdGnurbs(const Args& a) {
     if (a.has("--cage-out")) throw Error("gnurbs: --cage-out needs --fit (the cage is only changed by fitting)");
     r = buildG2Gnurbs(cage, o);
   }
-  const GnurbsBrep b = gnurbsToBrep(r);
+  GnurbsBrepOptions bo;
+  bo.mergeRegular = a.has("--merge-regular");
+  const GnurbsBrep b = gnurbsToBrep(r, bo);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const GnurbsContinuity c = measureGnurbsContinuity(r);
   const std::string sidecar = out.substr(0, out.size() - ext.size() - 1) + ".faces.json";

@@ -14,6 +14,11 @@ namespace holefill {
 
 struct GnurbsBrepOptions {
   double sewTolerance = 1e-7;  // relative to the cage's bounding-box diagonal
+  // Merge rectangles of regular faces (bicubic patches of one tensor-product region) into one
+  // B-spline face each, its interior knots reduced to the surface's continuity (C² where the
+  // knot intervals along the rectangle's rows and columns agree). Fewer, larger faces for
+  // downstream CAD; off by default so B-rep faces map one-to-one to patches.
+  bool mergeRegular = false;
 };
 
 struct GnurbsBrep {
@@ -22,7 +27,9 @@ struct GnurbsBrep {
   int freeEdges = 0;       // edges used by one face only: the cage boundary's images
   bool closed = false;
   bool valid = false;      // BRepCheck_Analyzer
-  std::string sidecarJson; // {"faces": [{"name": "Face1", "control_face": f, "sub_patch": s, "input_face": g}, …], …}
+  std::string sidecarJson; // {"faces": [{"name": "Face1", "control_face": f, "sub_patch": s, "input_face": g}, …], …};
+                           // a merged face lists all its control faces in "control_faces"
+  int mergedFaces = 0;     // B-rep faces that hold more than one patch
 };
 
 GnurbsBrep gnurbsToBrep(const G2GnurbsResult& result, const GnurbsBrepOptions& options = {});

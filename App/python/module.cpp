@@ -335,7 +335,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
      "BREP of a Catmull-Clark extraordinary-point hole ring (bicubic patches around a valence-N hole).");
   m.def("gnurbsSurface", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixXi& quads,
                             const std::vector<std::tuple<int, int, double>>& knots, const std::vector<std::pair<int, int>>& sharpEdges,
-                            const std::map<int, std::array<double, 3>>& anchors, bool refine, int numberBase) {
+                            const std::map<int, std::array<double, 3>>& anchors, bool refine, int numberBase, bool mergeRegular) {
     return guarded([&] {
       if (quads.cols() != 4) throw Error("quads must have 4 columns (one row per quad), got " + std::to_string(quads.cols()));
       QuadCage cage;
@@ -355,7 +355,9 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::gil_scoped_release release;
         const auto t0 = std::chrono::steady_clock::now();
         r = buildG2Gnurbs(cage, o);
-        b = gnurbsToBrep(r);
+        GnurbsBrepOptions bo;
+        bo.mergeRegular = mergeRegular;
+        b = gnurbsToBrep(r, bo);
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         c = measureGnurbsContinuity(r);
       }
@@ -363,7 +365,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("vertices"), py::arg("quads"), py::arg("knots") = std::vector<std::tuple<int, int, double>>{},
      py::arg("sharpEdges") = std::vector<std::pair<int, int>>{}, py::arg("anchors") = std::map<int, std::array<double, 3>>{},
-     py::arg("refine") = true, py::arg("numberBase") = 0,
+     py::arg("refine") = true, py::arg("numberBase") = 0, py::arg("mergeRegular") = false,
      "G² G-NURBS surface over a quad cage (0-based indices): (BREP text of the shell, faces sidecar JSON, report JSON).");
   m.def("readCage", [](const std::string& path) {
     return guarded([&] {

@@ -96,6 +96,16 @@ cp "$T/cage_valence5.obj" "$T/turn.obj"
 printf '# sharp 2 3\n# sharp 3 4\n# sharp 2 17\n# sharp 17 18\n# sharp 18 19\n' >>"$T/turn.obj"
 "$H" gnurbs "$T/turn.obj" --out "$T/turn.brep" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 3 ] && grep -q "crease turns at vertex 2" "$T/err"; then ok "turn: written, exit 3, $(cat "$T/err")"; else bad "turn: rc=$rc $(cat "$T/err")"; fi
+# --merge-regular: fewer faces, the same valid shell.
+if "$H" gnurbs "$T/cage_valence5.obj" --merge-regular --out "$T/merged.brep" --json >"$T/merged.json" 2>"$T/err"; then
+  "$PY" - "$T" <<'PY' && ok "merge-regular: 30 faces instead of 60, valid" || bad "merged report: $(cat "$T/merged.json")"
+import json, sys
+r = json.load(open(sys.argv[1] + "/merged.json"))
+s = json.load(open(sys.argv[1] + "/merged.faces.json"))
+assert r["brep"]["faces"] == 30 and r["brep"]["valid"] and len(s["faces"]) == 30, r["brep"]
+assert sum(len(f.get("control_faces", [f["control_face"]])) for f in s["faces"] if f["sub_patch"] < 0) == 40, s
+PY
+else bad "merge: $(cat "$T/err")"; fi
 # Fitting: points of a wave over the valence-5 cage's disk; the fitted cage is written too.
 "$PY" - "$T/wave.xyz" <<'PY'
 import math, sys

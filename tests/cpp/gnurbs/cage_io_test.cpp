@@ -1,7 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -112,4 +117,43 @@ TEST(GnurbsBrep, SewnShellInControlFaceOrderWithTheSidecar) {
   EXPECT_LT(c.g2Spokes, 1e-6);
   EXPECT_EQ(c.edges, 48);
   EXPECT_NE(gnurbsReportJson(cube, c, &cb, 0.1).find("\"refinements\":1"), std::string::npos);
+}
+
+TEST(GnurbsBrep, RegularRectanglesMergeIntoC2BSplineFacesOfTheSameShape) {
+  for (int n : {4, 5}) {
+    SCOPED_TRACE("valence " + std::to_string(n));
+    const G2GnurbsResult r = buildG2Gnurbs(cages::polarCage(n, 3));
+    const GnurbsBrep plain = gnurbsToBrep(r);
+    GnurbsBrepOptions o;
+    o.mergeRegular = true;
+    const GnurbsBrep merged = gnurbsToBrep(r, o);
+    std::printf("valence %d: %d faces merged into %d (%d merged faces), valid %d, free edges %d -> %d\n", n, plain.faces, merged.faces,
+                merged.mergedFaces, merged.valid, plain.freeEdges, merged.freeEdges);
+    EXPECT_TRUE(merged.valid);
+    EXPECT_LT(merged.faces, plain.faces);
+    EXPECT_GE(merged.mergedFaces, n);  // at least a rectangle per sector
+    GProp_GProps a, b;
+    BRepGProp::SurfaceProperties(plain.shape, a);
+    BRepGProp::SurfaceProperties(merged.shape, b);
+    EXPECT_NEAR(a.Mass(), b.Mass(), 1e-7 * a.Mass());  // OCCT's area integration differs by 2e-8 between the face splits
+    // The same surface: points of every original patch lie on the merged shell.
+    double worst = 0;
+    for (const auto& p : r.patches)
+      for (double u : {0.3, 0.8}) {
+        const Eigen::Vector3d q = p.surface.point(u, 1 - u);
+        BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(q.x(), q.y(), q.z())).Vertex(), merged.shape);
+        worst = std::max(worst, d.Value());
+      }
+    EXPECT_LT(worst, 1e-9);
+    // Inside a regular rectangle the B-spline is C²: every interior knot is simple.
+    int interior = 0;
+    for (TopExp_Explorer ex(merged.shape, TopAbs_FACE); ex.More(); ex.Next()) {
+      const auto s = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(ex.Current())));
+      ASSERT_FALSE(s.IsNull());
+      for (int i = 2; i < s->NbUKnots(); ++i, ++interior) EXPECT_EQ(s->UMultiplicity(i), 1);
+      for (int i = 2; i < s->NbVKnots(); ++i, ++interior) EXPECT_EQ(s->VMultiplicity(i), 1);
+    }
+    EXPECT_GT(interior, 0);
+    EXPECT_NE(merged.sidecarJson.find("\"control_faces\":["), std::string::npos);
+  }
 }
