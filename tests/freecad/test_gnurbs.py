@@ -30,6 +30,8 @@ def test_surface_from_arrays_is_g2_valid_and_in_control_face_order():
     assert rep["faces"][0] == {"name": "Face1", "control_face": 0, "sub_patch": 0, "input_face": 0}, rep["faces"][0]
     bb = shell.BoundBox
     assert bb.XLength > 3 and bb.YLength > 3
+    merged, mrep = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], mergeRegular=True)
+    assert merged.isValid() and len(merged.Faces) == 30 and abs(merged.Area - shell.Area) < 1e-6 * shell.Area, len(merged.Faces)
     # A crease ending inside the cage (at spoke vertex 1) is a dart: built, with a warning.
     dart, drep = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], sharpEdges=[(0, 1)])
     assert dart.isValid() and any("dart" in w and "vertex 1" in w for w in drep["warnings"]), drep["warnings"]
