@@ -1,0 +1,49 @@
+// Labeled parameterization of a trimmed mesh region (mesh-extension.md sec. 4.2, after Vaitkus &
+// Várady): the user labels boundary segments North/East/South/West; a guiding frame
+// (guiding_frame.h) fitted to the labeled points gives where along its rectangle side each
+// labeled vertex belongs and the rectangle's proportions; local–global As-Rigid-As-Possible
+// mapping (Liu et al. 2008) then flattens the region with every labeled vertex held on its side
+// at the frame's position, only the rectangle's overall scale left to the optimisation.
+// Unlabeled boundary vertices and inner holes are free. The start is Tutte's embedding with the
+// perimeter on the rectangle (unlabeled stretches spread along its sides by arc length), which
+// cannot fold; triangles that ARAP turns over are counted and, when there are any, the result
+// falls back to the last iterate without them.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "fitting/guiding_frame.h"
+#include "mesh/triangle_mesh.h"
+
+namespace holefill {
+
+struct LabeledSegment {
+  Side side;
+  std::vector<int> vertices;  // consecutive perimeter vertices, in the perimeter's order
+};
+
+struct LabeledParameterizationOptions {
+  int iterations = 40;           // local–global rounds
+  GuidingFrameOptions frame;
+};
+
+struct LabeledParameterization {
+  Eigen::MatrixX2d uv;             // per mesh vertex; labeled vertices on the sides of [0, width] × [0, height]
+  double width = 0, height = 0;    // the rectangle, after the optimised scale
+  std::vector<int> perimeter;      // the outer boundary loop, anticlockwise in uv
+  GuidingFrame frame;
+  int flippedTriangles = 0;        // in the returned map (0 unless even the start had some)
+  double arapEnergy = 0;           // Σ cot-weighted |edge − rotated edge|², relative to Σ cot-weighted |edge|²
+  std::vector<std::string> warnings;
+};
+
+// Throws Error for regions the method cannot take: fewer than two triangles, non-manifold or
+// non-orientable meshes, several components, a segment with no vertex or with vertices not
+// consecutive on the perimeter, a vertex labeled with two sides other than at a shared corner
+// (e.g. North and South on one segment), fewer than two labeled sides.
+LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
+                                            const LabeledParameterizationOptions& options = {});
+
+}  // namespace holefill

@@ -1,0 +1,137 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fitting/labeled_parameterization.h"
+#include "geometry/error.h"
+
+using namespace holefill;
+
+namespace {
+
+// A (nx+1)×(ny+1) grid of vertices over [0, nx·h] × [0, ny·h], lifted by z(x, y), two triangles
+// per cell, anticlockwise seen from +z. Vertex (i, j) has index j·(nx+1) + i.
+TriangleMesh grid(int nx, int ny, double h, const std::function<Eigen::Vector3d(double, double)>& place) {
+  TriangleMesh m;
+  m.vertices.resize((nx + 1) * (ny + 1), 3);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) m.vertices.row(j * (nx + 1) + i) = place(i * h, j * h).transpose();
+  m.triangles.resize(2 * nx * ny, 3);
+  int t = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+      m.triangles.row(t++) << a, b, c;
+      m.triangles.row(t++) << a, c, d;
+    }
+  return m;
+}
+
+// The grid's boundary sides as segments (S along j = 0, E along i = nx, N along j = ny backwards, W along i = 0 backwards).
+std::vector<LabeledSegment> sides(int nx, int ny, std::vector<Side> which) {
+  std::vector<LabeledSegment> out;
+  for (Side s : which) {
+    LabeledSegment seg{s, {}};
+    if (s == Side::South) for (int i = 0; i <= nx; ++i) seg.vertices.push_back(i);
+    if (s == Side::East) for (int j = 0; j <= ny; ++j) seg.vertices.push_back(j * (nx + 1) + nx);
+    if (s == Side::North) for (int i = nx; i >= 0; --i) seg.vertices.push_back(ny * (nx + 1) + i);
+    if (s == Side::West) for (int j = ny; j >= 0; --j) seg.vertices.push_back(j * (nx + 1));
+    out.push_back(seg);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(LabeledParameterization, AFlatLabeledRectangleMapsOntoItselfAndLabelsLandOnTheirSides) {
+  const int nx = 12, ny = 6;
+  const TriangleMesh flat = grid(nx, ny, 0.5, [](double x, double y) { return Eigen::Vector3d(x, y, 0); });
+  const LabeledParameterization p = parameterizeLabeled(flat, sides(nx, ny, {Side::South, Side::East, Side::North, Side::West}));
+  std::printf("flat: %.6f x %.6f, ARAP energy %.2e, flips %d\n", p.width, p.height, p.arapEnergy, p.flippedTriangles);
+  EXPECT_NEAR(p.width, 6.0, 1e-6);
+  EXPECT_NEAR(p.height, 3.0, 1e-6);
+  EXPECT_EQ(p.flippedTriangles, 0);
+  EXPECT_LT(p.arapEnergy, 1e-10);
+  double worst = 0;
+  for (Eigen::Index v = 0; v < flat.vertices.rows(); ++v) worst = std::max(worst, (p.uv.row(v) - flat.vertices.row(v).head<2>()).norm());
+  EXPECT_LT(worst, 1e-6);  // the isometry itself
+}
+
+TEST(LabeledParameterization, ACurvedRegionWithAMissingCornerKeepsItsLabelsOnTheRectangleSides) {
+  // A quarter of a cylinder (radius 3) over a 16×8 grid, the cells of one corner removed, and only
+  // South, East and North labeled; West's stretch and the cut corner are free.
+  const int nx = 16, ny = 8;
+  TriangleMesh m = grid(nx, ny, 0.25, [](double x, double y) { return Eigen::Vector3d(3 * std::sin(x / 3), y, 3 * std::cos(x / 3)); });
+  std::vector<int> keep;
+  for (Eigen::Index t = 0; t < m.triangles.rows(); ++t) {
+    const int a = m.triangles(t, 0), i = a % (nx + 1), j = a / (nx + 1);
+    if (!(i >= nx - 3 && j >= ny - 3)) keep.push_back(static_cast<int>(t));  // cut the north-east corner
+  }
+  TriangleMesh cut;
+  cut.vertices = m.vertices;
+  cut.triangles.resize(static_cast<Eigen::Index>(keep.size()), 3);
+  for (size_t k = 0; k < keep.size(); ++k) cut.triangles.row(static_cast<Eigen::Index>(k)) = m.triangles.row(keep[k]);
+  // The cut leaves vertices (i > nx−3, j > ny−3) unused: drop them by renumbering.
+  std::vector<int> used(cut.vertices.rows(), -1);
+  int n = 0;
+  for (Eigen::Index t = 0; t < cut.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (used[cut.triangles(t, k)] < 0) used[cut.triangles(t, k)] = n++;
+  TriangleMesh region;
+  region.vertices.resize(n, 3);
+  for (Eigen::Index v = 0; v < cut.vertices.rows(); ++v)
+    if (used[v] >= 0) region.vertices.row(used[v]) = cut.vertices.row(v);
+  region.triangles = cut.triangles;
+  for (Eigen::Index t = 0; t < region.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) region.triangles(t, k) = used[region.triangles(t, k)];
+  auto id = [&](int i, int j) { return used[j * (nx + 1) + i]; };
+  std::vector<LabeledSegment> segs;
+  LabeledSegment south{Side::South, {}}, east{Side::East, {}}, north{Side::North, {}};
+  for (int i = 0; i <= nx; ++i) south.vertices.push_back(id(i, 0));
+  for (int j = 0; j <= ny - 3; ++j) east.vertices.push_back(id(nx, j));       // the east side below the cut
+  for (int i = nx - 3; i >= 0; --i) north.vertices.push_back(id(i, ny));      // the north side left of the cut
+  const LabeledParameterization p = parameterizeLabeled(region, {south, east, north});
+  std::printf("cylinder with a cut corner: %.4f x %.4f (arc 4, height 2), ARAP energy %.2e, flips %d, frame degree %d\n", p.width,
+              p.height, p.arapEnergy, p.flippedTriangles, p.frame.degree);
+  EXPECT_EQ(p.flippedTriangles, 0);
+  for (int v : south.vertices) EXPECT_NEAR(p.uv(v, 1), 0.0, 1e-9);
+  for (int v : east.vertices) EXPECT_NEAR(p.uv(v, 0), p.width, 1e-9);
+  for (int v : north.vertices) EXPECT_NEAR(p.uv(v, 1), p.height, 1e-9);
+  // The developable cylinder unrolls to arc length 4 by height 2; the cut corner is the guiding
+  // frame's extrapolation, so the proportions are close, not exact (measured 4.076 x 2.002).
+  EXPECT_NEAR(p.width, 4.0, 0.1);
+  EXPECT_NEAR(p.height, 2.0, 0.05);
+  EXPECT_LT(p.arapEnergy, 1e-2);  // measured 3.9e-3
+}
+
+TEST(LabeledParameterization, DegenerateRegionsAndLabelsAreRefused) {
+  const int nx = 4, ny = 3;
+  const TriangleMesh flat = grid(nx, ny, 1, [](double x, double y) { return Eigen::Vector3d(x, y, 0); });
+  const auto all = sides(nx, ny, {Side::South, Side::East, Side::North, Side::West});
+  TriangleMesh one;
+  one.vertices = flat.vertices.topRows(3);
+  one.triangles.resize(1, 3);
+  one.triangles << 0, 1, 2;
+  EXPECT_THROW(parameterizeLabeled(one, all), Error);
+  TriangleMesh fin = flat;  // a third triangle on edge 0-1: non-manifold
+  fin.vertices.conservativeResize(fin.vertices.rows() + 1, 3);
+  fin.vertices.row(fin.vertices.rows() - 1) << 0.5, 0, 1;
+  fin.triangles.conservativeResize(fin.triangles.rows() + 1, 3);
+  fin.triangles.row(fin.triangles.rows() - 1) << 0, 1, static_cast<int>(fin.vertices.rows() - 1);
+  EXPECT_THROW(parameterizeLabeled(fin, all), Error);
+  auto message = [&](const std::vector<LabeledSegment>& segs) {
+    try {
+      parameterizeLabeled(flat, segs);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message({{Side::South, {}}, all[1]}).find("names no vertex"), std::string::npos);
+  EXPECT_NE(message({{Side::South, {0, 1, 6}}, all[2]}).find("not on the region's outer boundary"), std::string::npos);
+  EXPECT_NE(message({{Side::South, {0, 2}}, all[2]}).find("not consecutive"), std::string::npos);
+  EXPECT_NE(message({{Side::North, {0, 1, 2}}, {Side::South, {1, 2, 3}}}).find("labeled both"), std::string::npos);
+  EXPECT_NE(message({all[0]}).find("at least two"), std::string::npos);
+  EXPECT_NE(message({all[0], {Side::North, all[1].vertices}, {Side::East, all[2].vertices}}).find("out of order"), std::string::npos);
+  EXPECT_EQ(message(all), "accepted");
+}
