@@ -6,12 +6,12 @@ PKGS=(
   build-essential cmake g++ pkg-config
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev occt-misc
-  libtbb-dev libeigen3-dev zlib1g-dev libtorch-dev libgtest-dev pybind11-dev python3-dev python3-numpy
+  libtbb-dev libeigen3-dev zlib1g-dev libtorch-dev libgtest-dev pybind11-dev python3-dev python3-numpy libcgal-dev
   freecad xvfb xdotool imagemagick python3-pyside2.qttest x11-utils bc
   # libtorch calls the system BLAS: OpenBLAS instead of the reference BLAS makes UVTran 5-10x faster.
   libopenblas0-pthread python3-matplotlib
 )
-# scripts/bench.sh adds the peers' packages (CGAL and its demo data, assimp's test models).
+# scripts/bench.sh adds the peers' packages (CGAL's demo data, assimp's test models, OpenSubdiv).
 read -r -a extra <<< "${HOLEFILL_EXTRA_PKGS:-}"
 PKGS+=("${extra[@]}")
 missing=()

@@ -1,0 +1,39 @@
+// Extension of a parameterized trimmed region to its whole domain rectangle (mesh-extension.md
+// sec. 5): in 2D, regular grid samples of the (optionally enlarged) rectangle outside the
+// region's parameter footprint, inner holes included, triangulated together with the region's
+// boundary edges as constraints (CGAL's constrained Delaunay triangulation); in 3D, the new
+// vertices placed by the polyharmonic extension Δᵏx = 0 (k = 2 continues the region G1, k = 3 G2,
+// the default), with the region's own vertices fixed and Δ the cotangent Laplacian of the
+// extended mesh in the parameter domain (rows of the outer rim left out: their one-sided
+// Laplacian is not zero even on a plane), plus k-th differences along the new grid lines (the
+// paper's isocurve fairness), solved as one sparse least-squares problem. The paper's
+// ARAP-distortion smoothness term is not part of this step.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "mesh/triangle_mesh.h"
+
+namespace holefill {
+
+struct DomainExtensionOptions {
+  double spacing = 0;      // grid spacing in the domain; 0: the region's mean edge length in uv
+  int marginLayers = 0;    // grid layers added around the rectangle
+  int order = 3;           // k of Δᵏx = 0: 2 (G1) or 3 (G2)
+  double fairness = 1e-2;  // weight of the k-th differences along the new grid lines, relative to Δᵏ's
+};
+
+struct DomainExtension {
+  TriangleMesh mesh;             // the region's vertices and triangles first, unchanged, then the new ones
+  Eigen::MatrixX2d uv;           // per vertex of `mesh`
+  int regionVertices = 0, regionTriangles = 0;
+  double u0 = 0, v0 = 0, u1 = 0, v1 = 0;  // the extended domain
+};
+
+// `uv` per region vertex (e.g. LabeledParameterization::uv), inside [0, width] × [0, height]
+// give or take the free boundary stretches. Throws Error for sizes that disagree, non-finite uv
+// or an order other than 2 or 3.
+DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::MatrixX2d& uv, double width, double height,
+                                  const DomainExtensionOptions& options = {});
+
+}  // namespace holefill
