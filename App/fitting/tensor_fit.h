@@ -1,0 +1,37 @@
+// The last step of labeled fitting (mesh-extension.md sec. 3): a cubic tensor-product B-spline
+// with a chosen number of control points fitted by least squares to parameterized points (the
+// extended four-sided mesh, or the bare region for comparison) with a small thin-plate term,
+// then trimmed by the region's boundary loops, whose parameters become the face's pcurves. The
+// result carries the diagnostics the benchmark compares: the region's data error, the control
+// points whose support holds fewer than three points ("weak"), and the normal matrix's condition.
+#pragma once
+
+#include <Eigen/Dense>
+#include <TopoDS_Face.hxx>
+
+#include "geometry/bspline_surface.h"
+#include "mesh/triangle_mesh.h"
+
+namespace holefill {
+
+struct TensorFitOptions {
+  int controlU = 12, controlV = 12;  // control points per direction (cubic: at least 4)
+  double smoothing = 1e-6;           // thin-plate weight relative to the data term's scale
+};
+
+struct TensorFitResult {
+  BSplineSurface surface;             // untrimmed, over the points' domain
+  TopoDS_Face face;                   // trimmed by the region's boundary loops
+  bool valid = false;                 // BRepCheck_Analyzer on the face
+  double dataMax = 0, dataRms = 0;    // region vertices to the surface at their parameters / region diagonal
+  int weakControlPoints = 0;
+  double log10Condition = 0;          // of the normal matrix (infinite when singular)
+};
+
+// `points`/`pointsUV`: what is fitted (rows alike); `region`/`regionUV`: the trimmed region whose
+// vertices measure the data error and whose boundary loops trim the face. Throws Error for sizes
+// that disagree, fewer than 4 control points a direction, or non-finite input.
+TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& pointsUV, const TriangleMesh& region,
+                                 const Eigen::MatrixX2d& regionUV, const TensorFitOptions& options = {});
+
+}  // namespace holefill

@@ -1,0 +1,138 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fitting/domain_extension.h"
+#include "fitting/tensor_fit.h"
+#include "geometry/bspline_basis.h"
+#include "geometry/error.h"
+
+using namespace holefill;
+
+namespace {
+
+// The truth: a cubic B-spline over [0, 4] × [0, 2] with 7 × 5 control points.
+BSplineSurface truth() {
+  BSplineSurface s;
+  s.knotsU = clampedUniformKnots(3, 4, 0, 4);
+  s.knotsV = clampedUniformKnots(3, 2, 0, 2);
+  s.poles.resize(35, 3);
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 5; ++j)
+      s.poles.row(i * 5 + j) << 4.0 * i / 6, 2.0 * j / 4, 0.3 * std::sin(1.1 * i) * std::cos(0.9 * j) + 0.05 * i * j;
+  return s;
+}
+
+// Grid cells of [0, 4] × [0, 2] (spacing 0.125) kept by `inside` on their centre; uv exact.
+TriangleMesh region(const BSplineSurface& s, const std::function<bool(double, double)>& inside, Eigen::MatrixX2d& uv) {
+  const int nx = 32, ny = 16;
+  const double h = 0.125;
+  std::vector<int> id((nx + 1) * (ny + 1), -1);
+  std::vector<Eigen::Vector3i> tris;
+  std::vector<Eigen::Vector2d> pts;
+  auto vid = [&](int i, int j) {
+    int& k = id[j * (nx + 1) + i];
+    if (k < 0) k = static_cast<int>(pts.size()), pts.emplace_back(i * h, j * h);
+    return k;
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (!inside((i + 0.5) * h, (j + 0.5) * h)) continue;
+      const int a = vid(i, j), b = vid(i + 1, j), c = vid(i + 1, j + 1), d = vid(i, j + 1);
+      tris.emplace_back(a, b, c);
+      tris.emplace_back(a, c, d);
+    }
+  TriangleMesh m;
+  m.vertices.resize(static_cast<Eigen::Index>(pts.size()), 3);
+  uv.resize(static_cast<Eigen::Index>(pts.size()), 2);
+  for (size_t k = 0; k < pts.size(); ++k) {
+    m.vertices.row(static_cast<Eigen::Index>(k)) = s.point(pts[k].x(), pts[k].y()).transpose();
+    uv.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
+  }
+  m.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (size_t k = 0; k < tris.size(); ++k) m.triangles.row(static_cast<Eigen::Index>(k)) = tris[k].transpose();
+  return m;
+}
+
+// Largest distance between the fit and the truth over the rectangle outside the region.
+double bandDeviation(const BSplineSurface& fit, const BSplineSurface& t, const std::function<bool(double, double)>& inside) {
+  double worst = 0;
+  for (int i = 0; i <= 80; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const double u = 4.0 * i / 80, v = 2.0 * j / 40;
+      if (!inside(u, v)) worst = std::max(worst, (fit.point(u, v) - t.point(u, v)).norm());
+    }
+  return worst;
+}
+
+}  // namespace
+
+TEST(TensorFit, ReproducesAKnownBicubicFromTheWholeRectangle) {
+  const BSplineSurface t = truth();
+  Eigen::MatrixX2d uv;
+  const TriangleMesh whole = region(t, [](double, double) { return true; }, uv);
+  TensorFitOptions o;
+  o.controlU = 7;
+  o.controlV = 5;
+  o.smoothing = 0;
+  const TensorFitResult r = fitTensorProduct(whole.vertices, uv, whole, uv, o);
+  std::printf("whole rectangle: data max %.1e, pole error %.1e, weak %d, log10 cond %.1f, face valid %d\n", r.dataMax,
+              (r.surface.poles - t.poles).cwiseAbs().maxCoeff(), r.weakControlPoints, r.log10Condition, r.valid);
+  EXPECT_LT(r.dataMax, 1e-12);
+  EXPECT_LT((r.surface.poles - t.poles).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_EQ(r.weakControlPoints, 0);
+  EXPECT_TRUE(r.valid);
+}
+
+TEST(TensorFit, AnEllipticRegionWithItsExtensionHasNoWeakControlPointsAndABetterConditionedSystem) {
+  // The paper's point: fitted alone, a trimmed region leaves control points with (almost) no data
+  // in their support; fitted with its extension, none. Measured here: weak control points 2 → 0,
+  // log10 condition 5.7 → 2.7. The distance to the truth outside the region is not better on
+  // this wavy truth (0.26 with the extension against 0.11 alone, whose four corners are pinned
+  // to the truth): the extension continues the region smoothly, not the truth's waves; the
+  // benchmark of issue 7 is where the band is to be compared on smooth truths.
+  const BSplineSurface t = truth();
+  const auto inside = [](double u, double v) { return (u - 2) * (u - 2) / 3.4 + (v - 1) * (v - 1) / 0.85 <= 1; };
+  Eigen::MatrixX2d uv;
+  const TriangleMesh r = region(t, inside, uv);
+  TensorFitOptions o;
+  o.controlU = 10;
+  o.controlV = 7;
+  DomainExtensionOptions eo;
+  const DomainExtension ext = extendToRectangle(r, uv, 4, 2, eo);
+  const TensorFitResult with = fitTensorProduct(ext.mesh.vertices, ext.uv, r, uv, o);
+  // Alone: the region's points over the same rectangle (the corners pinned so the domain matches).
+  Eigen::MatrixX3d alonePts(r.vertices.rows() + 4, 3);
+  Eigen::MatrixX2d aloneUV(r.vertices.rows() + 4, 2);
+  alonePts.topRows(r.vertices.rows()) = r.vertices;
+  aloneUV.topRows(r.vertices.rows()) = uv;
+  const double cu[4] = {0, 4, 4, 0}, cv[4] = {0, 0, 2, 2};
+  for (int k = 0; k < 4; ++k) {
+    aloneUV.row(r.vertices.rows() + k) << cu[k], cv[k];
+    alonePts.row(r.vertices.rows() + k) = t.point(cu[k], cv[k]).transpose();
+  }
+  const TensorFitResult alone = fitTensorProduct(alonePts, aloneUV, r, uv, o);
+  const double bandWith = bandDeviation(with.surface, t, inside), bandAlone = bandDeviation(alone.surface, t, inside);
+  std::printf("with extension: data max %.1e, weak %d, log10 cond %.1f, band %.3f, face valid %d\n", with.dataMax, with.weakControlPoints,
+              with.log10Condition, bandWith, with.valid);
+  std::printf("region alone:   data max %.1e, weak %d, log10 cond %.1f, band %.3f\n", alone.dataMax, alone.weakControlPoints,
+              alone.log10Condition, bandAlone);
+  EXPECT_EQ(with.weakControlPoints, 0);
+  EXPECT_GT(alone.weakControlPoints, 0);
+  EXPECT_LT(with.log10Condition, alone.log10Condition);
+  EXPECT_LT(with.dataMax, 1e-3);
+  EXPECT_TRUE(with.valid);
+}
+
+TEST(TensorFit, RefusesBadInput) {
+  const BSplineSurface t = truth();
+  Eigen::MatrixX2d uv;
+  const TriangleMesh whole = region(t, [](double, double) { return true; }, uv);
+  TensorFitOptions o;
+  o.controlU = 3;
+  EXPECT_THROW(fitTensorProduct(whole.vertices, uv, whole, uv, o), Error);
+  EXPECT_THROW(fitTensorProduct(whole.vertices.topRows(5), uv, whole, uv), Error);
+  Eigen::MatrixX3d bad = whole.vertices;
+  bad(4, 2) = std::nan("");
+  EXPECT_THROW(fitTensorProduct(bad, uv, whole, uv), Error);
+}
