@@ -2,6 +2,7 @@
 // Python one. Exit codes: 0 done; 1 bad usage or input (one clear line on
 // stderr, nothing written); 2 the fill failed (nothing written); 3 the fill was
 // written but did not reach the requested continuity (the report says what it reached).
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
@@ -23,12 +24,14 @@
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
 #include "geometry/text_file.h"
+#include "fitting/labeled_fit.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
 #include "gnurbs/gnurbs_fit.h"
 #include "gnurbs/gnurbs_report.h"
 #include "gnurbs/sample_cages.h"
 #include "geometry/atomic_file.h"
+#include "geometry/bspline_surface.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "inspect/inspection_render.h"
@@ -61,6 +64,9 @@ const char* kUsage =
     "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
+    "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension G1|G2|none]\n"
+    "                [--margin M] [--untrimmed-out S.brep] [--json]   labeled fitting of a trimmed mesh region; LABELS.json:\n"
+    "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
@@ -371,6 +377,44 @@ int cmdGnurbs(const Args& a) {
   return r.warnings.empty() ? 0 : 3;
 }
 
+// Exit 0 when written, 3 when written with warnings (folded triangles, an invalid trimmed face).
+int cmdFit(const Args& a) {
+  if (a.input.empty()) throw Error("fit: no region mesh given");
+  if (!a.has("--labels")) throw Error("fit: --labels LABELS.json is required");
+  if (!a.has("--out")) throw Error("fit: --out OUT.brep (or .step) is required");
+  LabeledFitOptions o;
+  if (a.has("--ctrl")) {
+    const std::string c = a.get("--ctrl");
+    const auto x = c.find('x');
+    if (x == std::string::npos) throw Error("--ctrl takes NUxNV, e.g. 12x12, got '" + c + "'");
+    o.fit.controlU = static_cast<int>(number(c.substr(0, x), "--ctrl"));
+    o.fit.controlV = static_cast<int>(number(c.substr(x + 1), "--ctrl"));
+  }
+  const std::string ext = a.get("--extension", "G2");
+  if (ext == "G1") o.extension.order = 2;
+  else if (ext == "G2") o.extension.order = 3;
+  else if (ext == "none") o.extend = false;
+  else throw Error("--extension must be G1, G2 or none, got '" + ext + "'");
+  if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
+  const TriangleMesh region = readMesh(a.input);
+  const std::vector<LabeledSegment> labels = parseLabelsJson(readFileBytes(a.get("--labels"), 1 << 26), a.get("--labels"));
+  const LabeledFitResult r = fitLabeled(region, labels, o);
+  writeShape(r.fit.face, a.get("--out"));
+  if (a.has("--untrimmed-out")) writeShape(BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face(), a.get("--untrimmed-out"));
+  if (a.has("--json")) {
+    std::cout << r.toJson() << "\n";
+  } else {
+    std::printf("domain %.6g x %.6g (guiding frame degree %d), %d flipped triangles, %d extension vertices\n", r.parameterization.width,
+                r.parameterization.height, r.parameterization.frame.degree, r.parameterization.flippedTriangles,
+                static_cast<int>(r.extension.mesh.vertices.rows()) - r.extension.regionVertices);
+    std::printf("fit %dx%d: data max %.2e, rms %.2e of the region's diagonal; %d weak control points; log10 condition %.1f; face %s; %.2f s\n",
+                r.fit.surface.numU(), r.fit.surface.numV(), r.fit.dataMax, r.fit.dataRms, r.fit.weakControlPoints, r.fit.log10Condition,
+                r.fit.valid ? "valid" : "INVALID", r.seconds);
+  }
+  for (const auto& w : r.parameterization.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return r.parameterization.flippedTriangles > 0 || !r.fit.valid ? 3 : 0;
+}
+
 int cmdSamples(const Args& a) {
   if (a.input.empty()) throw Error("samples: no output folder");
   for (const auto& n : samples::names()) {
@@ -413,6 +457,7 @@ int main(int argc, char** argv) {
     if (a.verb == "mesh-fill") return cmdMeshFill(a);
     if (a.verb == "mesh-holes") return cmdMeshHoles(a);
     if (a.verb == "gnurbs") return cmdGnurbs(a);
+    if (a.verb == "fit") return cmdFit(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

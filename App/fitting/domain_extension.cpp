@@ -121,6 +121,11 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       c += out.uv.row(id[k]).transpose() / 3;
     }
     if (winding(loops, c) != 0) continue;  // the region's own triangles cover this
+    // Flat faces (collinear points along the rectangle's rim and the region's boundary, which
+    // CGAL may close with a zero-area face) carry no surface and would make the cotangent
+    // weights infinite.
+    const Eigen::Vector2d e1 = out.uv.row(id[1]) - out.uv.row(id[0]), e2 = out.uv.row(id[2]) - out.uv.row(id[0]);
+    if (std::abs(e1.x() * e2.y() - e1.y() * e2.x()) <= 1e-9 * h * h) continue;
     added.emplace_back(id[0], id[1], id[2]);  // CGAL's faces are anticlockwise
   }
   out.mesh.triangles.resize(nt + static_cast<Eigen::Index>(added.size()), 3);
@@ -184,7 +189,9 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   // paper's isocurve fairness along the extension boundaries, here over all new grid lines.
   std::vector<Eigen::Triplet<double>> Ft;
   int frow = 0;
-  static const double diff[2][4] = {{1, -2, 1, 0}, {1, -3, 3, -1}};
+  // Differences of order k along each grid line; where a line of new vertices is too short for
+  // them (a small cut corner), one order less, down to second differences.
+  static const std::vector<std::vector<double>> diff = {{}, {}, {1, -2, 1}, {1, -3, 3, -1}};
   for (const auto& [ij, k0] : freshAt)
     for (int dir = 0; dir < 2; ++dir) {
       std::vector<int> run;
@@ -193,8 +200,14 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
         if (it == freshAt.end()) break;
         run.push_back(it->second);
       }
-      if (static_cast<int>(run.size()) < o.order + 1) continue;
-      for (int q = 0; q <= o.order; ++q) Ft.emplace_back(frow, run[q], diff[o.order - 2][q]);
+      int order = o.order;
+      while (order >= 2 && static_cast<int>(run.size()) < order + 1) --order;
+      if (order < 2) continue;
+      if (order < o.order) {  // only where the longer stencil does not fit along this line at all
+        const auto before = freshAt.find({ij.first - (dir == 0 ? 1 : 0), ij.second - (dir == 1 ? 1 : 0)});
+        if (before != freshAt.end()) continue;  // this run's start is inside a line already covered
+      }
+      for (int q = 0; q <= order; ++q) Ft.emplace_back(frow, run[q], diff[order][q]);
       ++frow;
     }
   Eigen::SparseMatrix<double> F(frow, nNew);

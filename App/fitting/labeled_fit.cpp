@@ -1,0 +1,80 @@
+#include "fitting/labeled_fit.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "geometry/error.h"
+#include "geometry/json_reader.h"
+#include "geometry/json_writer.h"
+
+namespace holefill {
+
+LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LabeledFitResult r;
+  r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
+  const LabeledParameterization& p = r.parameterization;
+  if (o.extend) {
+    r.extension = extendToRectangle(region, p.uv, p.width, p.height, o.extension);
+    r.fit = fitTensorProduct(r.extension.mesh.vertices, r.extension.uv, region, p.uv, o.fit);
+  } else {
+    r.fit = fitTensorProduct(region.vertices, p.uv, region, p.uv, o.fit);
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+std::string LabeledFitResult::toJson() const {
+  JsonWriter j;
+  j.beginObject()
+      .field("width", parameterization.width)
+      .field("height", parameterization.height)
+      .field("frame_degree", parameterization.frame.degree)
+      .field("frame_max_deviation", parameterization.frame.maxDeviation)
+      .field("flipped_triangles", parameterization.flippedTriangles)
+      .field("arap_energy", parameterization.arapEnergy)
+      .field("extended_vertices", static_cast<int>(extension.mesh.vertices.rows()) - extension.regionVertices)
+      .field("control_points_u", fit.surface.numU())
+      .field("control_points_v", fit.surface.numV())
+      .field("data_max", fit.dataMax)
+      .field("data_rms", fit.dataRms)
+      .field("weak_control_points", fit.weakControlPoints)
+      .field("log10_condition", fit.log10Condition)
+      .field("face_valid", fit.valid)
+      .field("seconds", seconds)
+      .field("warnings", parameterization.warnings)
+      .endObject();
+  return j.str();
+}
+
+std::vector<LabeledSegment> parseLabelsJson(const std::string& text, const std::string& name) {
+  const JsonValue root = parseJson(text, name);
+  const JsonValue* segs = root.find("segments");
+  if (!segs || segs->type != JsonValue::Type::Array)
+    throw Error("'" + name + "' needs {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]}");
+  std::vector<LabeledSegment> out;
+  for (size_t k = 0; k < segs->array.size(); ++k) {
+    const JsonValue& s = segs->array[k];
+    const std::string who = "'" + name + "' segment " + std::to_string(k + 1);
+    const JsonValue* label = s.find("label");
+    const JsonValue* vertices = s.find("vertices");
+    if (!label || label->type != JsonValue::Type::String) throw Error(who + " has no \"label\" string");
+    if (!vertices || vertices->type != JsonValue::Type::Array) throw Error(who + " has no \"vertices\" list");
+    LabeledSegment seg{Side::South, {}};
+    const std::string& l = label->string;
+    if (l == "N" || l == "North") seg.side = Side::North;
+    else if (l == "E" || l == "East") seg.side = Side::East;
+    else if (l == "S" || l == "South") seg.side = Side::South;
+    else if (l == "W" || l == "West") seg.side = Side::West;
+    else throw Error(who + ": label '" + l + "' is not N, E, S or W");
+    for (const JsonValue& v : vertices->array) {
+      if (v.type != JsonValue::Type::Number || v.number != std::floor(v.number) || v.number < 0 || v.number > 2147483647.0)
+        throw Error(who + ": vertex indices are non-negative integers (0-based)");
+      seg.vertices.push_back(static_cast<int>(v.number));
+    }
+    out.push_back(seg);
+  }
+  return out;
+}
+
+}  // namespace holefill

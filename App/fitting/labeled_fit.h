@@ -1,0 +1,37 @@
+// Labeled fitting of a trimmed mesh region, end to end (mesh-extension.md): labeled
+// parameterization on the guiding frame's rectangle (labeled_parameterization.h), extension of
+// the region to that rectangle (domain_extension.h), and the cubic tensor-product fit trimmed by
+// the region's boundary (tensor_fit.h). `extend = false` fits the region alone, for comparison.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fitting/domain_extension.h"
+#include "fitting/labeled_parameterization.h"
+#include "fitting/tensor_fit.h"
+
+namespace holefill {
+
+struct LabeledFitOptions {
+  LabeledParameterizationOptions parameterization;
+  DomainExtensionOptions extension;  // order 3 (G2) by default
+  TensorFitOptions fit;
+  bool extend = true;
+};
+
+struct LabeledFitResult {
+  LabeledParameterization parameterization;
+  DomainExtension extension;         // empty when not extended
+  TensorFitResult fit;
+  double seconds = 0;
+  std::string toJson() const;
+};
+
+LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& options = {});
+
+// Labels as the CLI and Python take them: {"segments": [{"label": "N", "vertices": [i, j, ...]}, ...]},
+// labels N, E, S, W (or North, East, South, West), 0-based vertex indices along the boundary.
+std::vector<LabeledSegment> parseLabelsJson(const std::string& text, const std::string& name = "labels");
+
+}  // namespace holefill

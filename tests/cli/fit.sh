@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# holefill fit: a labeled region with a cut corner is fitted with its extension (no weak control
+# points, the data met) and without (for comparison); bad labels exit 1 and write nothing.
+set -u
+H=${HOLEFILL:?}
+T=$1
+PY=${PYTHON:-/usr/bin/python3}
+rm -rf "$T"; mkdir -p "$T"
+fail=0; pass=0
+ok() { pass=$((pass+1)); echo "ok   $1"; }
+bad() { fail=$((fail+1)); echo "FAIL $1"; }
+"$PY" - "$T" <<'PY'
+import json, math, sys
+t = sys.argv[1]
+nx, ny, h = 24, 12, 0.25
+verts, tris, vid = [], [], {}
+def v(i, j):
+    if (i, j) not in vid:
+        vid[(i, j)] = len(verts)
+        x, y = i * h, j * h
+        verts.append((x, y, 0.3 * math.sin(0.5 * x) * math.cos(0.7 * y)))
+    return vid[(i, j)]
+for j in range(ny):
+    for i in range(nx):
+        if (i + .5) * h > 4.5 and (j + .5) * h > 2.0:
+            continue  # the north-east corner is cut away
+        a, b, c, d = v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)
+        tris += [(a, b, c), (a, c, d)]
+with open(t + "/region.obj", "w") as f:
+    for p in verts: f.write("v %.12g %.12g %.12g\n" % p)
+    for q in tris: f.write("f %d %d %d\n" % (q[0] + 1, q[1] + 1, q[2] + 1))
+S = [vid[(i, 0)] for i in range(nx + 1)]
+E = [vid[(nx, j)] for j in range(0, 9)]
+N = [vid[(i, ny)] for i in range(18, -1, -1)]
+W = [vid[(0, j)] for j in range(ny, -1, -1)]
+json.dump({"segments": [{"label": "S", "vertices": S}, {"label": "E", "vertices": E}, {"label": "N", "vertices": N},
+                        {"label": "West", "vertices": W}]}, open(t + "/labels.json", "w"))
+json.dump({"segments": [{"label": "N", "vertices": S}, {"label": "S", "vertices": S}]}, open(t + "/contradictory.json", "w"))
+json.dump({"segments": [{"label": "Q", "vertices": S}, {"label": "S", "vertices": E}]}, open(t + "/badlabel.json", "w"))
+open(t + "/broken.json", "w").write('{"segments": [{"label": "N", "vertices": [1, 2')
+PY
+expect_error() {  # name, wanted text, args...
+  local name=$1 want=$2; shift 2
+  "$H" fit "$@" --out "$T/o.brep" >"$T/out" 2>"$T/err"; local rc=$?
+  if [ "$rc" = 1 ] && grep -q "^holefill: .*$want" "$T/err" && [ ! -e "$T/o.brep" ]; then ok "$name: $(head -1 "$T/err")"; else bad "$name: rc=$rc $(cat "$T/err")"; fi
+  rm -f "$T/o.brep"
+}
+expect_error "no labels" "labels" "$T/region.obj"
+expect_error "contradictory labels" "labeled both North and South" "$T/region.obj" --labels "$T/contradictory.json"
+expect_error "unknown label" "not N, E, S or W" "$T/region.obj" --labels "$T/badlabel.json"
+expect_error "broken JSON" "not valid JSON" "$T/region.obj" --labels "$T/broken.json"
+expect_error "bad --ctrl" "ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 12
+expect_error "bad --extension" "G1, G2 or none" "$T/region.obj" --labels "$T/labels.json" --extension G3
+for ext in G2 none; do
+  if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --extension $ext --out "$T/fit_$ext.brep" \
+       --untrimmed-out "$T/untrimmed_$ext.brep" --json >"$T/fit_$ext.json" 2>"$T/err"; then ok "fit with extension $ext"; else bad "fit $ext: $(cat "$T/err")"; fi
+done
+"$PY" - "$T" <<'PY' && ok "extension: no weak control points, data met, better conditioned" || bad "fit reports: $(cat "$T/fit_G2.json") $(cat "$T/fit_none.json")"
+import json, sys
+t = sys.argv[1]
+g2, none = json.load(open(t + "/fit_G2.json")), json.load(open(t + "/fit_none.json"))
+assert g2["face_valid"] and none["face_valid"], (g2, none)
+assert g2["flipped_triangles"] == 0 and g2["extended_vertices"] > 0, g2
+assert g2["weak_control_points"] == 0 and none["weak_control_points"] > 0, (g2, none)
+assert g2["log10_condition"] < none["log10_condition"], (g2, none)
+assert g2["data_max"] < 5e-3, g2
+assert abs(g2["width"] - 6.0) < 0.1 and abs(g2["height"] - 3.0) < 0.1, g2
+PY
+[ -s "$T/untrimmed_G2.brep" ] && ok "untrimmed surface written" || bad "no untrimmed surface"
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
