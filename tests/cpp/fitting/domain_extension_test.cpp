@@ -4,42 +4,18 @@
 
 #include "fitting/domain_extension.h"
 #include "geometry/error.h"
+#include "test_regions.h"
 
 using namespace holefill;
 
 namespace {
 
 // A disk-like region: the grid cells of [0, 4] × [0, 2] (spacing 0.25) whose centre lies in an
-// ellipse, lifted by f; uv = (x, y). Returns the region with unused vertices dropped.
+// ellipse, lifted by f; uv = (x, y).
 TriangleMesh ellipseRegion(const std::function<double(double, double)>& f, Eigen::MatrixX2d& uv) {
-  const int nx = 16, ny = 8;
-  const double h = 0.25;
-  std::vector<int> id((nx + 1) * (ny + 1), -1);
-  std::vector<Eigen::Vector3i> tris;
-  std::vector<Eigen::Vector2d> pts;
-  auto vid = [&](int i, int j) {
-    int& k = id[j * (nx + 1) + i];
-    if (k < 0) k = static_cast<int>(pts.size()), pts.emplace_back(i * h, j * h);
-    return k;
-  };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const double cx = (i + 0.5) * h - 2, cy = (j + 0.5) * h - 1;
-      if (cx * cx / 3.2 + cy * cy / 0.7 > 1) continue;
-      const int a = vid(i, j), b = vid(i + 1, j), c = vid(i + 1, j + 1), d = vid(i, j + 1);
-      tris.emplace_back(a, b, c);
-      tris.emplace_back(a, c, d);
-    }
-  TriangleMesh m;
-  m.vertices.resize(static_cast<Eigen::Index>(pts.size()), 3);
-  uv.resize(static_cast<Eigen::Index>(pts.size()), 2);
-  for (size_t k = 0; k < pts.size(); ++k) {
-    m.vertices.row(static_cast<Eigen::Index>(k)) << pts[k].x(), pts[k].y(), f(pts[k].x(), pts[k].y());
-    uv.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
-  }
-  m.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
-  for (size_t k = 0; k < tris.size(); ++k) m.triangles.row(static_cast<Eigen::Index>(k)) = tris[k].transpose();
-  return m;
+  return testregions::gridRegion(
+      16, 8, 0.25, [](double x, double y) { return (x - 2) * (x - 2) / 3.2 + (y - 1) * (y - 1) / 0.7 <= 1; },
+      [&](double x, double y) { return Eigen::Vector3d(x, y, f(x, y)); }, uv);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "fitting/tensor_fit.h"
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
+#include "test_regions.h"
 
 using namespace holefill;
 
@@ -23,35 +24,9 @@ BSplineSurface truth() {
   return s;
 }
 
-// Grid cells of [0, 4] × [0, 2] (spacing 0.125) kept by `inside` on their centre; uv exact.
+// Grid cells of [0, 4] × [0, 2] (spacing 0.125) kept by `inside` on their centre, on the truth; uv exact.
 TriangleMesh region(const BSplineSurface& s, const std::function<bool(double, double)>& inside, Eigen::MatrixX2d& uv) {
-  const int nx = 32, ny = 16;
-  const double h = 0.125;
-  std::vector<int> id((nx + 1) * (ny + 1), -1);
-  std::vector<Eigen::Vector3i> tris;
-  std::vector<Eigen::Vector2d> pts;
-  auto vid = [&](int i, int j) {
-    int& k = id[j * (nx + 1) + i];
-    if (k < 0) k = static_cast<int>(pts.size()), pts.emplace_back(i * h, j * h);
-    return k;
-  };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      if (!inside((i + 0.5) * h, (j + 0.5) * h)) continue;
-      const int a = vid(i, j), b = vid(i + 1, j), c = vid(i + 1, j + 1), d = vid(i, j + 1);
-      tris.emplace_back(a, b, c);
-      tris.emplace_back(a, c, d);
-    }
-  TriangleMesh m;
-  m.vertices.resize(static_cast<Eigen::Index>(pts.size()), 3);
-  uv.resize(static_cast<Eigen::Index>(pts.size()), 2);
-  for (size_t k = 0; k < pts.size(); ++k) {
-    m.vertices.row(static_cast<Eigen::Index>(k)) = s.point(pts[k].x(), pts[k].y()).transpose();
-    uv.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
-  }
-  m.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
-  for (size_t k = 0; k < tris.size(); ++k) m.triangles.row(static_cast<Eigen::Index>(k)) = tris[k].transpose();
-  return m;
+  return testregions::gridRegion(32, 16, 0.125, inside, [&](double u, double v) { return s.point(u, v); }, uv);
 }
 
 // Largest distance between the fit and the truth over the rectangle outside the region.
