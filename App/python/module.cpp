@@ -22,6 +22,7 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "fitting/labeled_fit.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
 #include "gnurbs/gnurbs_report.h"
@@ -379,6 +380,29 @@ PYBIND11_MODULE(HoleFillApp, m) {
       return py::make_tuple(c.vertices, Eigen::MatrixXi(c.quads), knots, sharp, anchors);
     });
   }, py::arg("path"), "A quad cage OBJ (with # sharp/# knot/# anchor lines) as 0-based (vertices, quads, knots, sharp, anchors).");
+  m.def("fitLabeled", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::string& labelsJson,
+                         int controlU, int controlV, const std::string& extension, int margin) {
+    return guarded([&] {
+      LabeledFitOptions o;
+      o.fit.controlU = controlU;
+      o.fit.controlV = controlV;
+      if (extension == "G1") o.extension.order = 2;
+      else if (extension == "G2") o.extension.order = 3;
+      else if (extension == "none") o.extend = false;
+      else throw Error("extension must be G1, G2 or none, got '" + extension + "'");
+      o.extension.marginLayers = margin;
+      const std::vector<LabeledSegment> labels = parseLabelsJson(labelsJson);
+      LabeledFitResult r;
+      {
+        py::gil_scoped_release release;
+        r = fitLabeled(TriangleMesh{vertices, triangles}, labels, o);
+      }
+      const TopoDS_Face untrimmed = BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face();
+      return py::make_tuple(py::bytes(shapeToBrepString(r.fit.face)), py::bytes(shapeToBrepString(untrimmed)), r.toJson(), r.parameterization.uv);
+    });
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
+     py::arg("extension") = "G2", py::arg("margin") = 0,
+     "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex).");
   m.def("sampleCageNames", &cages::sampleCageNames);
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
         py::arg("name"), "OBJ text of a bundled sample cage.");

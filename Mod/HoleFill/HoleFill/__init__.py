@@ -27,7 +27,7 @@ CONTINUITIES = ("G0", "G1", "G2")
 __all__ = ["findHoles", "fillHole", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
            "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
-           "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints"]
+           "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints", "fitLabeled"]
 
 
 class Hole(dict):
@@ -174,5 +174,6 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402
 from HoleFill.meshfill import MeshHole, fillMeshHoles, makeMeshFill, meshHoles, readMesh, writeMesh  # noqa: E402
+from HoleFill.labeled import fitLabeled  # noqa: E402
 from HoleFill.gnurbs import (cageFromShape, cageShell, extraordinaryPoints, gnurbsSurface, importCage, makeGnurbs,  # noqa: E402
                              readCage, sampleCage)

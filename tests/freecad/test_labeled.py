@@ -1,0 +1,60 @@
+"""Headless FreeCAD tests of labeled fitting from Python: a Mesh region with a cut corner,
+labeled on four sides, becomes one valid trimmed face; the mesh stays as it was; bad labels
+raise clear errors."""
+import math
+
+import FreeCAD
+import Mesh
+
+import fcharness
+import HoleFill
+
+
+def cut_region():
+    """A wavy 6×3 sheet of 0.25 cells with its north-east corner cut away; labels on its sides."""
+    nx, ny, h = 24, 12, 0.25
+    pts, facets, vid = [], [], {}
+
+    def v(i, j):
+        if (i, j) not in vid:
+            vid[(i, j)] = len(pts)
+            x, y = i * h, j * h
+            pts.append(FreeCAD.Vector(x, y, 0.3 * math.sin(0.5 * x) * math.cos(0.7 * y)))
+        return vid[(i, j)]
+
+    for j in range(ny):
+        for i in range(nx):
+            if (i + .5) * h > 4.5 and (j + .5) * h > 2.0:
+                continue
+            a, b, c, d = v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)
+            facets += [(a, b, c), (a, c, d)]
+    labels = [("S", [vid[(i, 0)] for i in range(nx + 1)]), ("E", [vid[(nx, j)] for j in range(9)]),
+              ("N", [vid[(i, ny)] for i in range(18, -1, -1)]), ("W", [vid[(0, j)] for j in range(ny, -1, -1)])]
+    return Mesh.Mesh((pts, facets)), labels
+
+
+def test_a_labeled_region_becomes_one_trimmed_face():
+    m, labels = cut_region()
+    before = m.Topology
+    face, surface, rep = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8))
+    assert face.isValid() and face.ShapeType == "Face", face.ShapeType
+    assert rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3 and rep["flipped_triangles"] == 0, rep
+    assert abs(rep["width"] - 6) < 0.1 and abs(rep["height"] - 3) < 0.1, rep
+    assert len(rep["uv"]) == m.CountPoints
+    # The trimmed face is smaller than its untrimmed surface (the cut corner is trimmed away).
+    assert face.Area < surface.Area, (face.Area, surface.Area)
+    assert m.Topology[0] == before[0], "the mesh was modified"
+    alone = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), extension="none")[2]
+    assert alone["weak_control_points"] > 0 and alone["log10_condition"] > rep["log10_condition"], alone
+
+
+def test_bad_labels_give_clear_errors():
+    m, labels = cut_region()
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("N", labels[0][1]), ("S", labels[0][1])]), "labeled both")
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("Q", labels[0][1]), labels[1]]), "not N, E, S or W")
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [labels[0]]), "at least two")
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, extension="G7"), "G1, G2 or none")
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(Mesh.Mesh(), labels), "empty")
+
+
+fcharness.run(globals())
