@@ -14,6 +14,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Wire.hxx>
 #include <Eigen/Sparse>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,16 +27,44 @@ namespace holefill {
 
 namespace {
 
-// A closed wire on the surface through the loop's parameters (a periodic interpolating pcurve).
+// A closed wire on the surface through the loop's parameters: one interpolating pcurve per
+// stretch between corners (where the loop turns by more than 30° in uv), so corners stay sharp
+// instead of being rounded (and overshot) by one periodic curve; periodic when there is none.
 TopoDS_Wire loopWire(const Handle(Geom_Surface)& surface, const std::vector<Eigen::Vector2d>& uv) {
-  Handle(TColgp_HArray1OfPnt2d) pts = new TColgp_HArray1OfPnt2d(1, static_cast<int>(uv.size()));
-  for (size_t k = 0; k < uv.size(); ++k) pts->SetValue(static_cast<int>(k) + 1, gp_Pnt2d(uv[k].x(), uv[k].y()));
-  Geom2dAPI_Interpolate interp(pts, Standard_True, 1e-12);
-  interp.Perform();
-  if (!interp.IsDone()) throw Error("could not build a trimming curve through the region's boundary");
-  TopoDS_Edge e = BRepBuilderAPI_MakeEdge(interp.Curve(), surface);
-  BRepLib::BuildCurves3d(e);
-  return BRepBuilderAPI_MakeWire(e).Wire();
+  const int n = static_cast<int>(uv.size());
+  std::vector<int> corners;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector2d a = uv[k] - uv[(k + n - 1) % n], b = uv[(k + 1) % n] - uv[k];
+    if (a.norm() > 0 && b.norm() > 0 && std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) > M_PI / 6) corners.push_back(k);
+  }
+  auto curve = [&](const std::vector<Eigen::Vector2d>& pts, bool periodic) {
+    Handle(TColgp_HArray1OfPnt2d) P = new TColgp_HArray1OfPnt2d(1, static_cast<int>(pts.size()));
+    for (size_t k = 0; k < pts.size(); ++k) P->SetValue(static_cast<int>(k) + 1, gp_Pnt2d(pts[k].x(), pts[k].y()));
+    Geom2dAPI_Interpolate interp(P, periodic ? Standard_True : Standard_False, 1e-12);
+    interp.Perform();
+    if (!interp.IsDone()) throw Error("could not build a trimming curve through the region's boundary");
+    return interp.Curve();
+  };
+  BRepBuilderAPI_MakeWire wire;
+  if (corners.empty()) {
+    TopoDS_Edge e = BRepBuilderAPI_MakeEdge(curve(uv, true), surface);
+    BRepLib::BuildCurves3d(e);
+    wire.Add(e);
+  } else {
+    for (size_t c = 0; c < corners.size(); ++c) {
+      const int from = corners[c], to = corners[(c + 1) % corners.size()];
+      std::vector<Eigen::Vector2d> pts;
+      for (int k = from;; k = (k + 1) % n) {
+        pts.push_back(uv[k]);
+        if (k == to && pts.size() > 1) break;
+      }
+      TopoDS_Edge e = BRepBuilderAPI_MakeEdge(curve(pts, false), surface);
+      BRepLib::BuildCurves3d(e);
+      wire.Add(e);
+    }
+  }
+  if (!wire.IsDone()) throw Error("the trimming curves of the region's boundary do not close");
+  return wire.Wire();
 }
 
 }  // namespace
