@@ -162,16 +162,9 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     for (int k = 0; k < 3; ++k) area[out.mesh.triangles(t, k)] += third;
   }
   std::vector<int> rimCount(N, 0);
-  {
-    std::map<std::pair<int, int>, int> edgeUse;
-    for (Eigen::Index t = 0; t < out.mesh.triangles.rows(); ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int a = out.mesh.triangles(t, k), b = out.mesh.triangles(t, (k + 1) % 3);
-        ++edgeUse[{std::min(a, b), std::max(a, b)}];
-      }
-    for (const auto& [e, n] : edgeUse)
-      if (n == 1) ++rimCount[e.first], ++rimCount[e.second];
-  }
+  const MeshTopology extended(out.mesh);
+  for (const auto& e : extended.edges())
+    if (e.count == 1) ++rimCount[e.a], ++rimCount[e.b];
   std::vector<Eigen::Triplet<double>> Dt;
   for (int v = 0; v < N; ++v)
     if (rimCount[v] == 0) Dt.emplace_back(v, v, 1.0 / std::max(area[v], 1e-300));

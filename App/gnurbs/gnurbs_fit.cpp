@@ -132,8 +132,7 @@ GnurbsFitResult fitGnurbs(const QuadCage& initial, const Eigen::MatrixX3d& targe
     if (o.fitAnchors) a.setZero();
   const G2GnurbsResult constant = builder.build(rest);
 
-  auto current = [&](const QuadCage& c) { return builder.build(c); };
-  r.surface = current(r.cage);
+  r.surface = builder.build(r.cage);
   std::vector<Footpoint> foot = project(r.surface, target, o.samplesPerPatch);
   auto average = [&] {
     double sum = 0;
@@ -151,6 +150,15 @@ GnurbsFitResult fitGnurbs(const QuadCage& initial, const Eigen::MatrixX3d& targe
       L(v, v) = 1;
       for (int w : sp) L(v, w) -= 1.0 / static_cast<double>(sp.size());
     }
+  }
+  // The Laplacian term per coordinate (x, y, z interleaved), the same every round.
+  Eigen::MatrixXd LtL = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  {
+    const Eigen::MatrixXd l = L.transpose() * L + 1e-3 * Eigen::MatrixXd::Identity(n, n);
+    for (int j = 0; j < n; ++j)
+      for (int q = 0; q < n; ++q)
+        if (l(j, q) != 0)
+          for (int a = 0; a < 3; ++a) LtL(3 * j + a, 3 * q + a) = l(j, q);
   }
   for (int round = 0; round < o.iterations; ++round) {
     const Eigen::Index m = target.rows();
@@ -199,17 +207,11 @@ GnurbsFitResult fitGnurbs(const QuadCage& initial, const Eigen::MatrixX3d& targe
     for (int j = 0; j < na; ++j) X.segment<3>(3 * (nv + j)) = r.cage.anchors.at(anchorIds[j]);
     // + λ |L (X − X_now)|²: the update is smooth where the data is silent.
     const double lambda = o.smoothness * std::max(N.trace() / (3 * n), 1e-300);
-    Eigen::MatrixXd LtL = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-    const Eigen::MatrixXd l = L.transpose() * L + 1e-3 * Eigen::MatrixXd::Identity(n, n);
-    for (int j = 0; j < n; ++j)
-      for (int q = 0; q < n; ++q)
-        if (l(j, q) != 0)
-          for (int a = 0; a < 3; ++a) LtL(3 * j + a, 3 * q + a) = l(j, q);
     const Eigen::VectorXd Xn = (N + lambda * LtL).ldlt().solve(b + lambda * LtL * X);
     if (!Xn.allFinite()) throw Error("the fitting system is singular: the target leaves cage vertices undetermined");
     for (int v = 0; v < nv; ++v) r.cage.vertices.row(v) = Xn.segment<3>(3 * v).transpose();
     for (int j = 0; j < na; ++j) r.cage.anchors[anchorIds[j]] = Xn.segment<3>(3 * (nv + j));
-    r.surface = current(r.cage);
+    r.surface = builder.build(r.cage);
     foot = project(r.surface, target, o.samplesPerPatch);
     r.dAvgPerRound.push_back(average());
   }

@@ -68,14 +68,11 @@ double eigenPolyhedronB(int valence);
 struct SpokeConnection {
   double dS = 1, dA = 1, dB = 1;  // knot intervals: of the spoke, across it into A and into B
   double b0 = 0;                  // β at the EP end (s = 0)
-  double r = 1;                   // ρ's scale r_i (the paper takes 1); with EPs at both ends, ρ(0)
-  // With EPs at both ends: the far EP's b (β(1) = −b1) and ρ(1) (ρ is linear between r and r1),
-  // and β'(0), β'(1) each in its own end's half-spoke parameter running away from that EP, NaN
-  // where free. β is the polynomial of least degree through these (linear as in eq. (16) when
-  // both slopes are free).
+  double r = 1;                   // ρ's scale r at the EP end (connectionRho)
+  // With EPs at both ends: the far EP's b and r; the half next to it takes β = −b1 σ³,
+  // ρ = r1 σ³ (its own EP's connection seen from this end).
   bool epAtBothEnds = false;
   double b1 = 0, r1 = 1;
-  double slope0 = std::nan(""), slope1 = std::nan("");
 };
 
 // ρ's scale r at an EP of this valence. The paper takes r = 1; that is forced otherwise at

@@ -1,14 +1,7 @@
 #!/usr/bin/env bash
 # holefill fit: a labeled region with a cut corner is fitted with its extension (no weak control
 # points, the data met) and without (for comparison); bad labels exit 1 and write nothing.
-set -u
-H=${HOLEFILL:?}
-T=$1
-PY=${PYTHON:-/usr/bin/python3}
-rm -rf "$T"; mkdir -p "$T"
-fail=0; pass=0
-ok() { pass=$((pass+1)); echo "ok   $1"; }
-bad() { fail=$((fail+1)); echo "FAIL $1"; }
+. "$(dirname "$0")/checks.sh"
 "$PY" - "$T" <<'PY'
 import json, math, sys
 t = sys.argv[1]
@@ -39,11 +32,9 @@ json.dump({"segments": [{"label": "N", "vertices": S}, {"label": "S", "vertices"
 json.dump({"segments": [{"label": "Q", "vertices": S}, {"label": "S", "vertices": E}]}, open(t + "/badlabel.json", "w"))
 open(t + "/broken.json", "w").write('{"segments": [{"label": "N", "vertices": [1, 2')
 PY
-expect_error() {  # name, wanted text, args...
+expect_error() {  # name, wanted text, arguments after the verb (--out goes to $T/o.brep)
   local name=$1 want=$2; shift 2
-  "$H" fit "$@" --out "$T/o.brep" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ "$rc" = 1 ] && grep -q "^holefill: .*$want" "$T/err" && [ ! -e "$T/o.brep" ]; then ok "$name: $(head -1 "$T/err")"; else bad "$name: rc=$rc $(cat "$T/err")"; fi
-  rm -f "$T/o.brep"
+  expect_refusal "$name" "$want" "$T/o.brep" fit "$@" --out "$T/o.brep"
 }
 expect_error "no labels" "labels" "$T/region.obj"
 expect_error "contradictory labels" "labeled both North and South" "$T/region.obj" --labels "$T/contradictory.json"
@@ -67,5 +58,4 @@ assert g2["data_max"] < 5e-3, g2
 assert abs(g2["width"] - 6.0) < 0.1 and abs(g2["height"] - 3.0) < 0.1, g2
 PY
 [ -s "$T/untrimmed_G2.brep" ] && ok "untrimmed surface written" || bad "no untrimmed surface"
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+finish

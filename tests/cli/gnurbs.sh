@@ -1,23 +1,10 @@
 #!/usr/bin/env bash
 # holefill gnurbs: bad cages and lists exit 1 with one clear line and write nothing; good cages
 # write a valid shell, the sidecar and a report whose continuity numbers meet the G² goals.
-set -u
-H=${HOLEFILL:?}
-T=$1
-PY=${PYTHON:-/usr/bin/python3}
-rm -rf "$T"; mkdir -p "$T"
-fail=0; pass=0
-ok() { pass=$((pass+1)); echo "ok   $1"; }
-bad() { fail=$((fail+1)); echo "FAIL $1"; }
-expect_error() {  # name, wanted text in the message, args...
+. "$(dirname "$0")/checks.sh"
+expect_error() {  # name, wanted text, arguments after the verb (--out goes to $T/o.step)
   local name=$1 want=$2; shift 2
-  "$H" gnurbs "$@" --out "$T/o.step" >"$T/out" 2>"$T/err"; local rc=$?
-  if [ "$rc" = 1 ] && grep -q "^holefill: .*$want" "$T/err" && [ ! -e "$T/o.step" ] && [ ! -e "$T/o.faces.json" ]; then
-    ok "$name: $(head -1 "$T/err")"
-  else
-    bad "$name: rc=$rc, stderr: $(cat "$T/err")"
-  fi
-  rm -f "$T/o.step" "$T/o.faces.json"
+  expect_refusal "$name" "$want" "$T/o.step $T/o.faces.json" gnurbs "$@" --out "$T/o.step"
 }
 "$H" samples "$T" >/dev/null || { echo "FAIL samples"; exit 1; }
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n' >"$T/tri.obj"
@@ -133,5 +120,4 @@ else bad "fit: $(cat "$T/err")"; fi
 printf '1 2 3\n4 nan 6\n' >"$T/bad.xyz"
 expect_error "NaN in the fitting target" "line 2" "$T/cage_valence5.obj" --fit "$T/bad.xyz"
 expect_error "cage-out without fit" "needs --fit" "$T/cage_valence5.obj" --cage-out "$T/x.obj"
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+finish
