@@ -74,13 +74,20 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   out.u1 = std::max(width + m, uv.col(0).maxCoeff());
   out.v1 = std::max(height + m, uv.col(1).maxCoeff());
 
-  // Grid samples outside the footprint, kept half a spacing from its boundary (no slivers).
+  // Grid samples outside the footprint, kept half a spacing from its boundary (no slivers), over
+  // the rectangle and `pad` layers beyond it. The extension is solved on the padded grid and then
+  // cropped to the rectangle: the region's labeled sides lie on the rectangle's rim, and solved
+  // there, the new vertices next to them would have no whole stencil (a one-sided Laplacian is
+  // not zero even on a plane) and were left under-determined (measured: 1.2 off on a cylinder
+  // whose region was mapped exactly). Beyond the rectangle they continue the region instead.
+  const int pad = o.order + 1;
+  const int cu = std::max(1, static_cast<int>(std::ceil((out.u1 - out.u0) / h))), cv = std::max(1, static_cast<int>(std::ceil((out.v1 - out.v0) / h)));
+  const double hu = (out.u1 - out.u0) / cu, hv = (out.v1 - out.v0) / cv;
   std::vector<Eigen::Vector2d> fresh;
   std::map<std::pair<int, int>, int> freshAt;  // grid (i, j) → index into fresh
-  const int cu = std::max(1, static_cast<int>(std::ceil((out.u1 - out.u0) / h))), cv = std::max(1, static_cast<int>(std::ceil((out.v1 - out.v0) / h)));
-  for (int i = 0; i <= cu; ++i)
-    for (int j = 0; j <= cv; ++j) {
-      const Eigen::Vector2d q(out.u0 + (out.u1 - out.u0) * i / cu, out.v0 + (out.v1 - out.v0) * j / cv);
+  for (int i = -pad; i <= cu + pad; ++i)
+    for (int j = -pad; j <= cv + pad; ++j) {
+      const Eigen::Vector2d q(out.u0 + hu * i, out.v0 + hv * j);
       if (winding(loops, q) != 0) continue;
       bool near = false;
       for (const auto& loop : loops)
@@ -106,11 +113,12 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   for (const auto& hole : holes.holes)
     for (size_t k = 0; k < hole.loop.size(); ++k) cdt.insert_constraint(handle[hole.loop[k]], handle[hole.loop[(k + 1) % hole.loop.size()]]);
 
-  out.mesh.vertices.resize(nv + static_cast<Eigen::Index>(fresh.size()), 3);
-  out.mesh.vertices.topRows(nv) = region.vertices;
-  out.uv.resize(out.mesh.vertices.rows(), 2);
-  out.uv.topRows(nv) = uv;
-  for (size_t k = 0; k < fresh.size(); ++k) out.uv.row(nv + static_cast<Eigen::Index>(k)) = fresh[k].transpose();
+  TriangleMesh padded;
+  padded.vertices.resize(nv + static_cast<Eigen::Index>(fresh.size()), 3);
+  padded.vertices.topRows(nv) = region.vertices;
+  Eigen::MatrixX2d puv(padded.vertices.rows(), 2);
+  puv.topRows(nv) = uv;
+  for (size_t k = 0; k < fresh.size(); ++k) puv.row(nv + static_cast<Eigen::Index>(k)) = fresh[k].transpose();
   std::vector<Eigen::Vector3i> added;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     int id[3];
@@ -118,103 +126,208 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     for (int k = 0; k < 3; ++k) {
       id[k] = f->vertex(k)->info();
       if (id[k] < 0) throw Error("the extension met a point twice: the region's parameterization overlaps itself");
-      c += out.uv.row(id[k]).transpose() / 3;
+      c += puv.row(id[k]).transpose() / 3;
     }
     if (winding(loops, c) != 0) continue;  // the region's own triangles cover this
-    // Flat faces (collinear points along the rectangle's rim and the region's boundary, which
-    // CGAL may close with a zero-area face) carry no surface and would make the cotangent
-    // weights infinite.
-    const Eigen::Vector2d e1 = out.uv.row(id[1]) - out.uv.row(id[0]), e2 = out.uv.row(id[2]) - out.uv.row(id[0]);
+    // Flat faces (collinear points along the grid's rim and the region's boundary, which CGAL may
+    // close with a zero-area face) carry no surface and would make the cotangent weights infinite.
+    const Eigen::Vector2d e1 = puv.row(id[1]) - puv.row(id[0]), e2 = puv.row(id[2]) - puv.row(id[0]);
     if (std::abs(e1.x() * e2.y() - e1.y() * e2.x()) <= 1e-9 * h * h) continue;
     added.emplace_back(id[0], id[1], id[2]);  // CGAL's faces are anticlockwise
   }
-  out.mesh.triangles.resize(nt + static_cast<Eigen::Index>(added.size()), 3);
-  out.mesh.triangles.topRows(nt) = region.triangles;
-  for (size_t k = 0; k < added.size(); ++k) out.mesh.triangles.row(nt + static_cast<Eigen::Index>(k)) = added[k].transpose();
+  padded.triangles.resize(nt + static_cast<Eigen::Index>(added.size()), 3);
+  padded.triangles.topRows(nt) = region.triangles;
+  for (size_t k = 0; k < added.size(); ++k) padded.triangles.row(nt + static_cast<Eigen::Index>(k)) = added[k].transpose();
 
-  // 3D: min |Lᵏ x|² over the new vertices, L the uv cotangent Laplacian of the extended mesh.
-  const int N = static_cast<int>(out.mesh.vertices.rows()), nNew = N - nv;
-  if (nNew == 0) return out;
-  std::vector<Eigen::Triplet<double>> T;
-  std::vector<double> diag(N, 0.0);
-  for (Eigen::Index t = 0; t < out.mesh.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = out.mesh.triangles(t, k), b = out.mesh.triangles(t, (k + 1) % 3), c = out.mesh.triangles(t, (k + 2) % 3);
-      const Eigen::Vector2d u = out.uv.row(a) - out.uv.row(c), w = out.uv.row(b) - out.uv.row(c);
-      const double cot = u.dot(w) / std::max(std::abs(u.x() * w.y() - u.y() * w.x()), 1e-300);
-      const double wgt = 0.5 * cot;  // the weight of edge a-b from the corner at c
-      T.emplace_back(a, b, wgt);
-      T.emplace_back(b, a, wgt);
-      diag[a] -= wgt;
-      diag[b] -= wgt;
+  // 3D: min |Δᵏ x|² over the new vertices. Δ is the uv cotangent Laplacian over mixed Voronoi
+  // areas (Meyer et al.: circumcentric cells, halved at obtuse triangles), taken as the
+  // five-point stencil at grid nodes whose four grid neighbours exist (what the cotangent
+  // Laplacian is there, whichever diagonals the triangulation chose), so that it is exact on
+  // bicubics on the grid.
+  const int N = static_cast<int>(padded.vertices.rows()), nNew = N - nv;
+  if (nNew > 0) {
+    std::vector<Eigen::Triplet<double>> T;
+    std::vector<double> diag(N, 0.0);
+    for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int a = padded.triangles(t, k), b = padded.triangles(t, (k + 1) % 3), c = padded.triangles(t, (k + 2) % 3);
+        const Eigen::Vector2d u = puv.row(a) - puv.row(c), w = puv.row(b) - puv.row(c);
+        const double cot = u.dot(w) / std::max(std::abs(u.x() * w.y() - u.y() * w.x()), 1e-300);
+        const double wgt = 0.5 * cot;  // the weight of edge a-b from the corner at c
+        T.emplace_back(a, b, wgt);
+        T.emplace_back(b, a, wgt);
+        diag[a] -= wgt;
+        diag[b] -= wgt;
+      }
+    for (int v = 0; v < N; ++v) T.emplace_back(v, v, diag[v]);
+    Eigen::SparseMatrix<double, Eigen::RowMajor> L(N, N);
+    L.setFromTriplets(T.begin(), T.end());
+    std::vector<double> area(N, 0.0);
+    for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t) {
+      Eigen::Vector2d p[3];
+      for (int k = 0; k < 3; ++k) p[k] = puv.row(padded.triangles(t, k)).transpose();
+      const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
+      const double twice = std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+      int obtuse = -1;
+      for (int k = 0; k < 3; ++k)
+        if ((p[(k + 1) % 3] - p[k]).dot(p[(k + 2) % 3] - p[k]) < 0) obtuse = k;
+      for (int k = 0; k < 3; ++k) {
+        const int v = padded.triangles(t, k);
+        if (obtuse >= 0) {
+          area[v] += twice / (obtuse == k ? 4 : 8);
+          continue;
+        }
+        for (int side : {1, 2}) {  // the circumcentric cell: |e|² cot(opposite angle) / 8 for both edges at k
+          const Eigen::Vector2d b = p[(k + side) % 3], c = p[(k + 3 - side) % 3];
+          area[v] += (b - p[k]).squaredNorm() * (p[k] - c).dot(b - c) / std::max(twice, 1e-300) / 8;
+        }
+      }
     }
-  for (int v = 0; v < N; ++v) T.emplace_back(v, v, diag[v]);
-  Eigen::SparseMatrix<double> L(N, N);
-  L.setFromTriplets(T.begin(), T.end());
-  // Δ = M⁻¹L (M the barycentric vertex areas), so Δ of a quadratic is constant; rows of vertices on
-  // the extended mesh's outer boundary are dropped at every power (their one-sided Laplacian is
-  // not zero even for a plane), so Δᵏ vanishes on linear data for k ≥ 1 and on quadratics for k ≥ 2.
-  std::vector<double> area(N, 0.0);
-  for (Eigen::Index t = 0; t < out.mesh.triangles.rows(); ++t) {
-    const Eigen::Vector2d a = out.uv.row(out.mesh.triangles(t, 1)) - out.uv.row(out.mesh.triangles(t, 0));
-    const Eigen::Vector2d b = out.uv.row(out.mesh.triangles(t, 2)) - out.uv.row(out.mesh.triangles(t, 0));
-    const double third = std::abs(a.x() * b.y() - a.y() * b.x()) / 6;
-    for (int k = 0; k < 3; ++k) area[out.mesh.triangles(t, k)] += third;
+    std::vector<int> rimCount(N, 0);
+    const MeshTopology paddedTopology(padded);
+    for (const auto& e : paddedTopology.edges())
+      if (e.count == 1) ++rimCount[e.a], ++rimCount[e.b];
+
+    // Rows of Δ: the five-point stencil where the four grid neighbours exist, the triangulation's
+    // at other vertices off its rim, none elsewhere.
+    std::vector<char> hasRow(N, 0), gridRow(N, 0);
+    std::vector<Eigen::Triplet<double>> Dt;
+    for (const auto& [ij, k] : freshAt) {
+      const int v = nv + k;
+      const auto at = [&](int di, int dj) {
+        const auto it = freshAt.find({ij.first + di, ij.second + dj});
+        return it == freshAt.end() ? -1 : nv + it->second;
+      };
+      const int w = at(-1, 0), e = at(1, 0), s = at(0, -1), n = at(0, 1);
+      if (w < 0 || e < 0 || s < 0 || n < 0) continue;
+      Dt.emplace_back(v, w, 1 / (hu * hu));
+      Dt.emplace_back(v, e, 1 / (hu * hu));
+      Dt.emplace_back(v, s, 1 / (hv * hv));
+      Dt.emplace_back(v, n, 1 / (hv * hv));
+      Dt.emplace_back(v, v, -2 / (hu * hu) - 2 / (hv * hv));
+      hasRow[v] = gridRow[v] = 1;
+    }
+    for (int v = 0; v < N; ++v) {
+      if (gridRow[v] || rimCount[v] != 0) continue;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(L, v); it; ++it)
+        Dt.emplace_back(v, static_cast<int>(it.col()), it.value() / std::max(area[v], 1e-300));
+      hasRow[v] = 1;
+    }
+    Eigen::SparseMatrix<double, Eigen::RowMajor> Delta(N, N);
+    Delta.setFromTriplets(Dt.begin(), Dt.end());
+    Eigen::SparseMatrix<double, Eigen::RowMajor> Pk = Delta;
+    for (int k = 1; k < o.order; ++k) Pk = (Delta * Pk).pruned();
+    // A row of Δᵏ is whole where every Δ it is made of has a row: within the padded grid's rim
+    // layers it is not, and it is left out there (reading the missing rows as Δ = 0 would pull
+    // the padding flat).
+    std::vector<char> whole = hasRow;
+    for (int k = 1; k < o.order; ++k) {
+      std::vector<char> next(N, 0);
+      for (int v = 0; v < N; ++v) {
+        bool all = hasRow[v];
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Delta, v); it && all; ++it) all = whole[it.col()];
+        next[v] = all;
+      }
+      whole.swap(next);
+    }
+    std::vector<Eigen::Triplet<double>> keep;
+    for (int v = 0; v < N; ++v)
+      if (whole[v]) keep.emplace_back(v, v, 1.0);
+    Eigen::SparseMatrix<double> K(N, N);
+    K.setFromTriplets(keep.begin(), keep.end());
+    const Eigen::SparseMatrix<double> P = (K * Pk).pruned();
+    const Eigen::SparseMatrix<double> Pn = P.rightCols(nNew);
+    // Differences of order k + 1 along the grid lines (zero on polynomials of degree ≤ k, so k = 3
+    // continues a bicubic exactly on the grid, k = 2 a biquadratic): they settle the padding, and
+    // are the paper's isocurve fairness along the extension's boundaries, here over all new grid
+    // lines. Lines of new vertices too short for them are left to Δᵏ's rows; only when that
+    // leaves the system singular do they get third differences (zero on quadratics only), and
+    // then second differences (which pull every curved surface flat).
+    static const std::vector<std::vector<double>> diff = {{}, {}, {1, -2, 1}, {1, -3, 3, -1}, {1, -4, 6, -4, 1}};
+    const auto gridLineDifferences = [&](int lowest) {
+      std::vector<Eigen::Triplet<double>> Ft;
+      int frow = 0;
+      for (const auto& [ij, first] : freshAt)
+        for (int dir = 0; dir < 2; ++dir) {
+          std::vector<int> run;
+          for (int q = 0; q <= o.order + 1; ++q) {
+            const auto it = freshAt.find({ij.first + (dir == 0 ? q : 0), ij.second + (dir == 1 ? q : 0)});
+            if (it == freshAt.end()) break;
+            run.push_back(it->second);
+          }
+          int order = o.order + 1;
+          while (order >= lowest && static_cast<int>(run.size()) < order + 1) --order;
+          if (order < lowest) continue;
+          if (order < o.order + 1) {  // only where the longer stencil does not fit along this line at all
+            const auto before = freshAt.find({ij.first - (dir == 0 ? 1 : 0), ij.second - (dir == 1 ? 1 : 0)});
+            if (before != freshAt.end()) continue;  // this run's start is inside a line already covered
+          }
+          for (int q = 0; q <= order; ++q) Ft.emplace_back(frow, run[q], diff[order][q]);
+          ++frow;
+        }
+      Eigen::SparseMatrix<double> F(frow, nNew);
+      F.setFromTriplets(Ft.begin(), Ft.end());
+      return Eigen::SparseMatrix<double>(F.transpose() * F);
+    };
+    const Eigen::SparseMatrix<double> PtP = Pn.transpose() * Pn;
+    const double scale = std::max(1e-300, PtP.diagonal().cwiseAbs().maxCoeff());
+    // Last resort, where even second differences leave new vertices free (a region that fills
+    // its rectangle but for a few padding nodes): a faint membrane Σ|x_i − x_j|² over the padded
+    // mesh's edges, which places them as calmly as their neighbours allow.
+    std::vector<Eigen::Triplet<double>> Mt;
+    Eigen::MatrixX3d membraneRhs = Eigen::MatrixX3d::Zero(nNew, 3);
+    for (const auto& e : paddedTopology.edges())
+      for (const auto& [a, b] : {std::pair<int, int>{e.a, e.b}, {e.b, e.a}}) {
+        if (a < nv) continue;
+        Mt.emplace_back(a - nv, a - nv, 1.0);
+        if (b >= nv) Mt.emplace_back(a - nv, b - nv, -1.0);
+        else membraneRhs.row(a - nv) += region.vertices.row(b);
+      }
+    Eigen::SparseMatrix<double> membrane(nNew, nNew);
+    membrane.setFromTriplets(Mt.begin(), Mt.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    Eigen::MatrixX3d rhs = -(Pn.transpose() * (P.leftCols(nv) * region.vertices));
+    bool solved = false;
+    for (int lowest : {o.order + 1, 3, 2, 0}) {
+      const Eigen::SparseMatrix<double> FtF = gridLineDifferences(std::max(lowest, 2));
+      const double fair = o.fairness * scale / std::max(1e-300, FtF.diagonal().cwiseAbs().maxCoeff());
+      if (lowest > 0) {
+        solver.compute(PtP + fair * FtF);
+      } else {
+        const double faint = 1e-6 * scale / 4;
+        solver.compute(PtP + fair * FtF + faint * membrane);
+        rhs += faint * membraneRhs;
+      }
+      // LDLᵀ of a singular semi-definite matrix may still "succeed" with a tiny or negative pivot.
+      solved = solver.info() == Eigen::Success && solver.vectorD().minCoeff() > 1e-12 * scale;
+      if (solved) break;
+    }
+    if (!solved) throw Error("the polyharmonic extension's system is singular");
+    const Eigen::MatrixX3d x = solver.solve(rhs);
+    if (!x.allFinite()) throw Error("the polyharmonic extension failed");
+    padded.vertices.bottomRows(nNew) = x;
   }
-  std::vector<int> rimCount(N, 0);
-  const MeshTopology extended(out.mesh);
-  for (const auto& e : extended.edges())
-    if (e.count == 1) ++rimCount[e.a], ++rimCount[e.b];
-  std::vector<Eigen::Triplet<double>> Dt;
+
+  // Crop to the rectangle: the new vertices inside it (grid lines run along its rim), and the
+  // triangles all of whose vertices are kept.
+  std::vector<int> newIndex(N, -1);
+  int kept = 0;
+  const double slack = 1e-9 * (hu + hv);
+  for (int v = 0; v < N; ++v) {
+    const bool inside = puv(v, 0) >= out.u0 - slack && puv(v, 0) <= out.u1 + slack && puv(v, 1) >= out.v0 - slack && puv(v, 1) <= out.v1 + slack;
+    if (v < nv || inside) newIndex[v] = kept++;
+  }
+  out.mesh.vertices.resize(kept, 3);
+  out.uv.resize(kept, 2);
   for (int v = 0; v < N; ++v)
-    if (rimCount[v] == 0) Dt.emplace_back(v, v, 1.0 / std::max(area[v], 1e-300));
-  Eigen::SparseMatrix<double> D(N, N);
-  D.setFromTriplets(Dt.begin(), Dt.end());
-  const Eigen::SparseMatrix<double> Delta = (D * L).pruned();
-  Eigen::SparseMatrix<double> P = Delta;
-  for (int k = 1; k < o.order; ++k) P = (Delta * P).pruned();
-  // Columns of the new vertices (unknowns) and of the region's (known).
-  const Eigen::SparseMatrix<double> Pn = P.rightCols(nNew);
-  const Eigen::MatrixX3d known = P.leftCols(nv) * region.vertices;
-  // Without the rim rows the new vertices along the rectangle's edges are under-determined:
-  // k-th differences along the grid lines through the new vertices (zero on polynomials of
-  // degree < k, so planes, and for k = 3 quadrics, are continued exactly) settle them; the
-  // paper's isocurve fairness along the extension boundaries, here over all new grid lines.
-  std::vector<Eigen::Triplet<double>> Ft;
-  int frow = 0;
-  // Differences of order k along each grid line; where a line of new vertices is too short for
-  // them (a small cut corner), one order less, down to second differences.
-  static const std::vector<std::vector<double>> diff = {{}, {}, {1, -2, 1}, {1, -3, 3, -1}};
-  for (const auto& [ij, k0] : freshAt)
-    for (int dir = 0; dir < 2; ++dir) {
-      std::vector<int> run;
-      for (int q = 0; q <= o.order; ++q) {
-        const auto it = freshAt.find({ij.first + (dir == 0 ? q : 0), ij.second + (dir == 1 ? q : 0)});
-        if (it == freshAt.end()) break;
-        run.push_back(it->second);
-      }
-      int order = o.order;
-      while (order >= 2 && static_cast<int>(run.size()) < order + 1) --order;
-      if (order < 2) continue;
-      if (order < o.order) {  // only where the longer stencil does not fit along this line at all
-        const auto before = freshAt.find({ij.first - (dir == 0 ? 1 : 0), ij.second - (dir == 1 ? 1 : 0)});
-        if (before != freshAt.end()) continue;  // this run's start is inside a line already covered
-      }
-      for (int q = 0; q <= order; ++q) Ft.emplace_back(frow, run[q], diff[order][q]);
-      ++frow;
-    }
-  Eigen::SparseMatrix<double> F(frow, nNew);
-  F.setFromTriplets(Ft.begin(), Ft.end());
-  Eigen::SparseMatrix<double> A = Pn.transpose() * Pn;
-  const double scale = std::max(1e-300, A.diagonal().cwiseAbs().maxCoeff());
-  const Eigen::SparseMatrix<double> FtF = F.transpose() * F;
-  const double fair = o.fairness * scale / std::max(1e-300, FtF.diagonal().cwiseAbs().maxCoeff());
-  A += fair * FtF;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-  if (solver.info() != Eigen::Success) throw Error("the polyharmonic extension's system is singular");
-  const Eigen::MatrixX3d x = solver.solve(-(Pn.transpose() * known));
-  if (!x.allFinite()) throw Error("the polyharmonic extension failed");
-  out.mesh.vertices.bottomRows(nNew) = x;
+    if (newIndex[v] >= 0) out.mesh.vertices.row(newIndex[v]) = padded.vertices.row(v), out.uv.row(newIndex[v]) = puv.row(v);
+  std::vector<Eigen::Vector3i> tris;
+  for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t) {
+    const int a = newIndex[padded.triangles(t, 0)], b = newIndex[padded.triangles(t, 1)], c = newIndex[padded.triangles(t, 2)];
+    if (a >= 0 && b >= 0 && c >= 0) tris.emplace_back(a, b, c);
+  }
+  out.mesh.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (size_t k = 0; k < tris.size(); ++k) out.mesh.triangles.row(static_cast<Eigen::Index>(k)) = tris[k].transpose();
   return out;
 }
 

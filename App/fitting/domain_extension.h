@@ -3,11 +3,13 @@
 // region's parameter footprint, inner holes included, triangulated together with the region's
 // boundary edges as constraints (CGAL's constrained Delaunay triangulation); in 3D, the new
 // vertices placed by the polyharmonic extension Δᵏx = 0 (k = 2 continues the region G1, k = 3 G2,
-// the default), with the region's own vertices fixed and Δ the cotangent Laplacian of the
-// extended mesh in the parameter domain (rows of the outer rim left out: their one-sided
-// Laplacian is not zero even on a plane), plus k-th differences along the new grid lines (the
-// paper's isocurve fairness), solved as one sparse least-squares problem. The paper's
-// ARAP-distortion smoothness term is not part of this step.
+// the default), with the region's own vertices fixed and Δ = M⁻¹L (cotangent Laplacian over
+// mixed Voronoi areas, the five-point stencil on the grid), plus (k+1)-th differences along the
+// new grid lines (the paper's isocurve fairness), one sparse least-squares problem. It is solved
+// on the grid padded by k + 1 layers beyond the rectangle and cropped back, so that where the
+// region's labeled sides lie on the rectangle's rim the new vertices next to them still have
+// whole stencils. On a grid through the region's vertices a bicubic is continued exactly (k = 3).
+// The paper's ARAP-distortion smoothness term is not part of this step.
 #pragma once
 
 #include <Eigen/Dense>
@@ -20,7 +22,7 @@ struct DomainExtensionOptions {
   double spacing = 0;      // grid spacing in the domain; 0: the region's mean edge length in uv
   int marginLayers = 0;    // grid layers added around the rectangle
   int order = 3;           // k of Δᵏx = 0: 2 (G1) or 3 (G2)
-  double fairness = 1e-2;  // weight of the k-th differences along the new grid lines, relative to Δᵏ's
+  double fairness = 1e-2;  // weight of the (k+1)-th differences along the new grid lines, relative to Δᵏ's
 };
 
 struct DomainExtension {

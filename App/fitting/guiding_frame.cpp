@@ -53,6 +53,59 @@ double project(const Eigen::MatrixX3d& P, const Eigen::Vector3d& q, double t) {
   return t;
 }
 
+// A Bézier curve's point at any t, also outside [0, 1] (de Casteljau extrapolates).
+Eigen::Vector3d casteljau(Eigen::MatrixX3d P, double t) {
+  for (Eigen::Index r = P.rows() - 1; r > 0; --r)
+    for (Eigen::Index k = 0; k < r; ++k) P.row(k) = (1 - t) * P.row(k) + t * P.row(k + 1);
+  return P.row(0).transpose();
+}
+
+// Least-squares Bézier of degree ≤ 3 through the points, parameters from chord length and then
+// corrected by projection (so that points on a cubic give that cubic, and its continuation).
+Eigen::MatrixX3d ownCurve(const std::vector<Eigen::Vector3d>& pts) {
+  const int n = std::min<int>(3, static_cast<int>(pts.size()) - 1);
+  std::vector<double> t(pts.size(), 0.0);
+  for (size_t k = 1; k < pts.size(); ++k) t[k] = t[k - 1] + (pts[k] - pts[k - 1]).norm();
+  for (double& x : t) x = t.back() > 0 ? x / t.back() : 0.0;
+  Eigen::MatrixX3d Y(pts.size(), 3), P;
+  for (size_t k = 0; k < pts.size(); ++k) Y.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
+  for (int round = 0; round < 3000; ++round) {  // projection converges linearly; each round is tiny
+    Eigen::MatrixXd B(pts.size(), n + 1);
+    for (size_t k = 0; k < pts.size(); ++k) B.row(static_cast<Eigen::Index>(k)) = bernstein(n, t[k], 0).row(0);
+    P = B.colPivHouseholderQr().solve(Y);
+    double moved = 0;
+    for (size_t k = 0; k < pts.size(); ++k) {
+      const double next = project(P, pts[k], t[k]);
+      moved = std::max(moved, std::abs(next - t[k]));
+      t[k] = next;
+    }
+    if (moved < 1e-13) break;
+  }
+  return P;
+}
+
+// Where side a's curve continued past its end and side b's continued before its start come
+// closest (each continued by up to three times its own length); false when that is farther
+// apart than `gap`.
+bool extrapolatedCorner(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b, double gap, Eigen::Vector3d& corner) {
+  const Eigen::MatrixX3d A = ownCurve(a), B = ownCurve(b);
+  double s0 = 1, s1 = 4, r0 = -3, r1 = 0, bestS = 1, bestR = 0, best = 1e300;
+  for (int level = 0; level < 6; ++level) {
+    const int g = 40;
+    for (int i = 0; i <= g; ++i)
+      for (int j = 0; j <= g; ++j) {
+        const double s = s0 + (s1 - s0) * i / g, r = r0 + (r1 - r0) * j / g;
+        const double d = (casteljau(A, s) - casteljau(B, r)).norm();
+        if (d < best) best = d, bestS = s, bestR = r;
+      }
+    const double hs = 2 * (s1 - s0) / g, hr = 2 * (r1 - r0) / g;
+    s0 = std::max(1.0, bestS - hs), s1 = std::min(4.0, bestS + hs), r0 = std::max(-3.0, bestR - hr), r1 = std::min(0.0, bestR + hr);
+  }
+  if (best > gap) return false;
+  corner = 0.5 * (casteljau(A, bestS) + casteljau(B, bestR));
+  return true;
+}
+
 }  // namespace
 
 Eigen::Vector3d GuidingFrame::point(Side side, double t) const {
@@ -82,13 +135,41 @@ GuidingFrame fitGuidingFrame(const LabeledSides& sides, const GuidingFrameOption
   if (labeledSides < 2) throw Error("label at least two sides (N, E, S or W) to fit a guiding frame");
   const double diagonal = std::max(box.diagonal().norm(), 1e-300);
 
-  // Chord-length parameters to start.
+  // Missing corners (two labeled sides whose labels stop short of their common corner by more
+  // than three point spacings): where
+  // the sides' own cubic fits, extrapolated, come closest, if they come within 5% of the
+  // diagonal (else, as for nearly parallel sides, the frame's least squares place it). Such a
+  // corner is then held while the frame is fitted: left to the shared least squares, the data
+  // barely determine it (a labeled stretch met within tolerance can be continued in many ways)
+  // and it settled 0.47 off on a cylinder with a cut corner.
+  std::array<bool, 4> heldEnd{};
+  std::array<Eigen::Vector3d, 4> heldCorner;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    if (!f.labeled[i] || !f.labeled[j]) continue;
+    // Only a real gap: ends a few point spacings apart are a corner the data already determine.
+    const auto spacing = [&](int k) {
+      const auto& p = sides.points[k];
+      double len = 0;
+      for (size_t q = 1; q < p.size(); ++q) len += (p[q] - p[q - 1]).norm();
+      return len / static_cast<double>(p.size() - 1);
+    };
+    if ((sides.points[i].back() - sides.points[j].front()).norm() <= 3 * std::max(spacing(i), spacing(j))) continue;
+    Eigen::Vector3d corner;
+    if (extrapolatedCorner(sides.points[i], sides.points[j], 0.05 * diagonal, corner)) heldEnd[i] = true, heldCorner[i] = corner;
+  }
+
+  // Chord-length parameters to start, over the side up to a held corner.
   for (int i = 0; i < 4; ++i) {
     if (!f.labeled[i]) continue;
     const auto& pts = sides.points[i];
     std::vector<double> t(pts.size(), 0.0);
     for (size_t k = 1; k < pts.size(); ++k) t[k] = t[k - 1] + (pts[k] - pts[k - 1]).norm();
-    for (double& x : t) x = t.back() > 0 ? x / t.back() : 0.0;
+    double total = t.back();
+    if (heldEnd[i]) total += (heldCorner[i] - pts.back()).norm();
+    double offset = 0;
+    if (heldEnd[(i + 3) % 4]) offset = (heldCorner[(i + 3) % 4] - pts.front()).norm(), total += offset;
+    for (double& x : t) x = total > 0 ? (x + offset) / total : 0.0;
     f.parameters[i] = t;
   }
 
@@ -138,6 +219,12 @@ GuidingFrame fitGuidingFrame(const LabeledSides& sides, const GuidingFrameOption
         for (int k = 0; k <= n; ++k)
           for (int l = 0; l <= n; ++l) A.block<3, 3>(3 * var[i][k], 3 * var[i][l]) += lambda * K(k, l) * Eigen::Matrix3d::Identity();
       }
+      const double hold = 1e8 * std::max(1.0, A.diagonal().cwiseAbs().maxCoeff());
+      for (int i = 0; i < 4; ++i)
+        if (heldEnd[i]) {
+          A.block<3, 3>(3 * var[i][n], 3 * var[i][n]) += hold * Eigen::Matrix3d::Identity();
+          b.segment<3>(3 * var[i][n]) += hold * heldCorner[i];
+        }
       const Eigen::VectorXd x = A.ldlt().solve(b);
       if (!x.allFinite()) throw Error("the guiding frame's least-squares system is singular: the labeled points are degenerate");
       Eigen::MatrixX3d X(m, 3);

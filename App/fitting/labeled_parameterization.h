@@ -26,6 +26,10 @@ struct LabeledSegment {
 
 struct LabeledParameterizationOptions {
   int iterations = 40;           // local–global rounds
+  // Weight of the guiding frame's placement of labeled vertices along their sides, relative to
+  // the mean ARAP edge weight; every labeled vertex stays on its side whatever the weight. Large:
+  // the placement is held (the paper's choice); 0: ARAP alone decides it.
+  double framePlacement = 1.0;
   GuidingFrameOptions frame;
 };
 

@@ -26,8 +26,8 @@ TEST(DomainExtension, FillsTheRectangleKeepsTheRegionAndContinuesPlanesAndQuadri
     std::function<double(double, double)> f;
     double tolerance;
   };
-  for (const Case& c : {Case{"plane", [](double x, double y) { return 0.3 * x - 0.2 * y + 1; }, 1e-9},
-                        Case{"quadric", [](double x, double y) { return 0.1 * (x - 2) * (x - 2) - 0.15 * (y - 1) * (y - 1) + 0.05 * x * y; }, 0.05}}) {
+  for (const Case& c : {Case{"plane", [](double x, double y) { return 0.3 * x - 0.2 * y + 1; }, 1e-8},
+                        Case{"quadric", [](double x, double y) { return 0.1 * (x - 2) * (x - 2) - 0.15 * (y - 1) * (y - 1) + 0.05 * x * y; }, 0.01}}) {
     for (int order : {2, 3}) {
       SCOPED_TRACE(std::string(c.name) + ", order " + std::to_string(order));
       Eigen::MatrixX2d uv;
@@ -57,9 +57,11 @@ TEST(DomainExtension, FillsTheRectangleKeepsTheRegionAndContinuesPlanesAndQuadri
         worst = std::max(worst, std::abs(e.mesh.vertices(v, 2) - c.f(e.uv(v, 0), e.uv(v, 1))));
       std::printf("%s, order %d: %d new vertices, max deviation from the truth outside the region %.2e\n", c.name, order,
                   static_cast<int>(e.mesh.vertices.rows() - region.vertices.rows()), worst);
-      // Measured: the plane to 1e-11; the quadric (heights within ±0.4) to 0.044 with k = 2 and
-      // 0.025 with k = 3, whose third differences vanish on it.
-      EXPECT_LT(worst, order == 3 ? 0.6 * c.tolerance : c.tolerance);
+      // Measured: the plane to 1.4e-9; the quadric (heights within ±0.4) to 2.0e-3 with k = 2 and
+      // 7.2e-3 with k = 3 (the grid here does not run through the region's vertices, so the
+      // cotangent Laplacian next to the region's boundary is exact on linear data only; on a
+      // grid through them a bicubic is continued exactly, see tensor_fit_test).
+      EXPECT_LT(worst, c.tolerance);
     }
   }
 }
