@@ -23,6 +23,9 @@ struct DomainExtensionOptions {
   int marginLayers = 0;    // grid layers added around the rectangle
   int order = 3;           // k of Δᵏx = 0: 2 (G1) or 3 (G2)
   double fairness = 1e-2;  // weight of the (k+1)-th differences along the new grid lines, relative to Δᵏ's
+  // Weight holding the region's vertices within k rings of its boundary to their places, relative
+  // to Δᵏ's (0: fixed exactly, the paper's choice); below 1, scan noise is not amplified outward.
+  double boundaryFidelity = 1e-3;
 };
 
 struct DomainExtension {

@@ -69,7 +69,7 @@ Eigen::MatrixX3d ownCurve(const std::vector<Eigen::Vector3d>& pts) {
   for (double& x : t) x = t.back() > 0 ? x / t.back() : 0.0;
   Eigen::MatrixX3d Y(pts.size(), 3), P;
   for (size_t k = 0; k < pts.size(); ++k) Y.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
-  for (int round = 0; round < 3000; ++round) {  // projection converges linearly; each round is tiny
+  for (int round = 0; round < 1000; ++round) {  // projection converges linearly
     Eigen::MatrixXd B(pts.size(), n + 1);
     for (size_t k = 0; k < pts.size(); ++k) B.row(static_cast<Eigen::Index>(k)) = bernstein(n, t[k], 0).row(0);
     P = B.colPivHouseholderQr().solve(Y);
@@ -79,7 +79,7 @@ Eigen::MatrixX3d ownCurve(const std::vector<Eigen::Vector3d>& pts) {
       moved = std::max(moved, std::abs(next - t[k]));
       t[k] = next;
     }
-    if (moved < 1e-13) break;
+    if (moved < 1e-9) break;
   }
   return P;
 }

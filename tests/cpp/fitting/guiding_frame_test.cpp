@@ -70,7 +70,7 @@ TEST(GuidingFrame, RecoversAKnownCubicFrameFromItsPointsAndItsCornersFromPartsOf
   }
   {
     // Points on the middle 70% of each side only, default options: the corners are inferred
-    // (the frame's purpose) from each side's own continuation and held: measured 0.011 of a
+    // (the frame's purpose) from each side's own continuation and held: measured 0.021 of a
     // frame about 5 across (0.146 when the shared least squares placed them).
     const double tolerance = GuidingFrameOptions().tolerance;
     GuidingFrameOptions o;
@@ -81,7 +81,7 @@ TEST(GuidingFrame, RecoversAKnownCubicFrameFromItsPointsAndItsCornersFromPartsOf
                 tolerance, f.degree, corner, f.maxDeviation, f.rounds);
     EXPECT_LE(f.maxDeviation, tolerance);
     EXPECT_EQ(f.degree, 3);
-    EXPECT_LT(corner, 0.03);  // measured 0.011
+    EXPECT_LT(corner, 0.04);  // measured 0.021
   }
 }
 
