@@ -10,6 +10,11 @@
 #  4. holefill_bench_gnurbs: G² G-NURBS vs OpenSubdiv's Catmull-Clark limit surface (Gregory end
 #     caps) on the same quad cages: G1/G2 across every cage edge, curvature at EPs, time.
 #     BENCH_ONLY=gnurbs runs part 4 alone.
+#  5. holefill_bench_fitting: labeled fitting (labels + G2 extension, and without extension) vs
+#     plain and thin-plate least squares and FreeCAD's ReverseEngineering.approxSurface (through
+#     freecadcmd, tests/bench/approx_surface.py) on 12 trimmed regions cut from known surfaces:
+#     data error, band deviation both ways, weak control points, condition, time; curvature
+#     pictures in bench-out/fitting. BENCH_ONLY=fitting runs part 5 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -17,6 +22,21 @@ export HOLEFILL_EXTRA_PKGS="libcgal-dev libcgal-demo assimp-testmodels libosd-de
 . "$(dirname "$0")/prepare.sh"
 export BENCH_OUT="$root/bench-out"
 mkdir -p "$BENCH_OUT"
+bench_fitting() {
+  cmake -S "$root" -B "$build" >/dev/null
+  cmake --build "$build" --target holefill_bench_fitting -j "$(nproc)"
+  echo
+  (
+    . tests/fcenv.sh "$build/Mod/HoleFill"
+    "$build/tests/holefill_bench_fitting" "$BENCH_OUT/fitting" tests/bench/approx_surface.py | tee "$BENCH_OUT/bench_fitting.md"
+    rm -rf "$HOME"
+  )
+}
+if [ "${BENCH_ONLY:-}" = fitting ]; then  # BENCH_ONLY=fitting runs part 5 alone
+  bench_fitting
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = gnurbs ]; then  # BENCH_ONLY=gnurbs runs part 4 alone
   cmake -S "$root" -B "$build" >/dev/null
   cmake --build "$build" --target holefill_bench_gnurbs -j "$(nproc)"
@@ -54,4 +74,5 @@ echo
 cmake --build "$build" --target holefill_bench_gnurbs -j "$(nproc)"
 echo
 "$build/tests/holefill_bench_gnurbs" 4 | tee "$BENCH_OUT/bench_gnurbs.md"
+bench_fitting
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

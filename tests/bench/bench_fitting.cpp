@@ -1,0 +1,534 @@
+// Labeled fitting (mesh-extension.md) against the fitters FreeCAD users have, in one run on the
+// same trimmed regions: regions (irregular, multi-sided, concave, with missing corners or an
+// inner hole, one noisy) cut out of known smooth surfaces, so the truth is known inside the
+// region and in the band between the region and its four-sided domain (the region's bounding
+// rectangle in the truth's parameters). Methods: ours (labels + G2 extension), ours without the
+// extension, plain least squares on the best-fit plane's parameters without and with thin-plate
+// smoothing, and FreeCAD's ReverseEngineering.approxSurface with its default smoothing and
+// without (run through freecadcmd by tests/bench/approx_surface.py on the same points). Every
+// method gets 12 × 12 cubic control points and is measured the same way (all distances over the
+// region's bounding-box diagonal): data max / RMS (region vertices to the surface, closest
+// point), band deviation truth→fit and fit→truth (max), weak control points (support holding
+// fewer than 3 of the points the method fitted, at the parameters it fitted them), log10
+// condition number of the unsmoothed normal matrix at those parameters, time. Writes curvature
+// pictures of the untrimmed surfaces of two cases. Prints Markdown tables.
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fitting/labeled_fit.h"
+#include "geometry/bspline_basis.h"
+#include "geometry/error.h"
+#include "geometry/polygon2d.h"
+#include "geometry/surface_projection.h"
+#include "inspect/color_scale.h"
+#include "inspect/raster_image.h"
+#include "../cpp/fitting/test_regions.h"
+
+using namespace holefill;
+
+namespace {
+
+constexpr int kControl = 12;
+
+// ---- truths: smooth surfaces over [-1, 5] × [-1, 3], regions cut from [0, 4] × [0, 2] ----
+
+struct Truth {
+  std::string name;
+  BSplineSurface surface;
+};
+
+// The B-spline (24 × 14 poles) through dense samples of P over the truth's whole domain: the
+// truth is this B-spline itself, smooth and known everywhere.
+Truth makeTruth(const std::string& name, const std::function<Eigen::Vector3d(double, double)>& P) {
+  Eigen::MatrixX2d uv;
+  TriangleMesh grid = testregions::gridRegion(96, 64, 1.0 / 16, [](double, double) { return true; },
+                                              [&](double u, double v) { return P(u - 1, v - 1); }, uv);
+  uv.col(0).array() -= 1;
+  uv.col(1).array() -= 1;
+  TensorFitOptions o;
+  o.controlU = 24;
+  o.controlV = 14;
+  o.smoothing = 0;
+  return {name, fitTensorProduct(grid.vertices, uv, grid, uv, o).surface};
+}
+
+std::vector<Truth> truths() {
+  std::vector<Truth> t;
+  t.push_back(makeTruth("bicubic", [](double u, double v) {
+    const double x = u - 2, y = v - 1;
+    return Eigen::Vector3d(u, v, 0.03 * x * x * x - 0.08 * x * y * y + 0.1 * y * y * y + 0.05 * x * y);
+  }));
+  t.push_back(makeTruth("saddle", [](double u, double v) { return Eigen::Vector3d(u, v, 0.12 * (u - 2) * (u - 2) - 0.18 * (v - 1) * (v - 1)); }));
+  t.push_back(makeTruth("cylinder", [](double u, double v) {
+    const double R = 2.5;
+    return Eigen::Vector3d(R * std::sin((u - 2) / R), v, R * (1 - std::cos((u - 2) / R)));
+  }));
+  t.push_back(makeTruth("sphere", [](double u, double v) {
+    const double R = 4.0, x = u - 2, y = v - 1;
+    return Eigen::Vector3d(u, v, std::sqrt(R * R - x * x - y * y));
+  }));
+  t.push_back(makeTruth("wave", [](double u, double v) { return Eigen::Vector3d(u, v, 0.2 * std::sin(0.9 * u) * std::cos(1.2 * v)); }));
+  t.push_back(makeTruth("torus", [](double u, double v) {
+    const double R = 5.0, r = 2.5, a = (u - 2) / R, b = (v - 1) / r;
+    return Eigen::Vector3d((R + r * std::cos(b)) * std::sin(a), r * std::sin(b), (R + r * std::cos(b)) * std::cos(a) - R - r);
+  }));
+  return t;
+}
+
+// ---- regions: a polygon in the truth's parameters, sides labeled S/E/N/W or '-' ----
+
+struct Shape {
+  std::string name;
+  std::vector<Eigen::Vector2d> outer;  // anticlockwise
+  std::string labels;                  // one per side of `outer` (side k runs from corner k to k+1)
+  std::vector<Eigen::Vector2d> hole;   // clockwise, or empty
+};
+
+std::vector<Shape> shapes() {
+  std::vector<Shape> s;
+  s.push_back({"cut corner", {{0, 0}, {4, 0}, {4, 1.2}, {2.8, 2}, {0, 2}}, "SE-NW", {}});
+  s.push_back({"concave", {{0, 0}, {4, 0}, {4, 2}, {2.7, 2}, {2.7, 1.1}, {1.3, 1.1}, {1.3, 2}, {0, 2}}, "SEN---NW", {}});
+  {
+    Shape e{"ellipse", {}, "", {}};
+    const int n = 48;
+    for (int k = 0; k < n; ++k) {
+      const double a0 = 2 * M_PI * k / n - M_PI / 4, a1 = 2 * M_PI * (k + 1) / n - M_PI / 4;  // side 0 unlabeled
+      e.outer.emplace_back(2 + 2.0 * std::cos(a0), 1 + 1.0 * std::sin(a0));
+      const double mid = 0.5 * (a0 + a1);  // outward normal direction of this side, roughly
+      const double deg = std::fmod(mid * 180 / M_PI + 720, 360.0);
+      char l = '-';
+      if (std::abs(deg - 270) < 30) l = 'S';
+      if (deg < 30 || deg > 330) l = 'E';
+      if (std::abs(deg - 90) < 30) l = 'N';
+      if (std::abs(deg - 180) < 30) l = 'W';
+      e.labels += l;
+    }
+    s.push_back(e);
+  }
+  s.push_back({"two corners cut", {{0.7, 0}, {4, 0}, {4, 1.3}, {3.3, 2}, {0, 2}, {0, 0.6}}, "SE-NW-", {}});
+  {
+    Shape h{"with hole", {{0, 0}, {4, 0}, {4, 2}, {0.8, 2}, {0, 1.3}}, "SEN-W", {}};
+    const int n = 20;
+    for (int k = 0; k < n; ++k) {
+      const double a = -2 * M_PI * k / n;
+      h.hole.emplace_back(2.2 + 0.5 * std::cos(a), 1.0 + 0.35 * std::sin(a));
+    }
+    s.push_back(h);
+  }
+  s.push_back({"irregular", {{0.15, 0.1}, {3.7, 0}, {4, 1.0}, {3.65, 1.9}, {1.9, 2.0}, {0.1, 1.75}, {0, 0.8}}, "S--N-W-", {}});
+  return s;
+}
+
+struct Region {
+  TriangleMesh mesh;
+  Eigen::MatrixX2d truthUV;
+  std::vector<LabeledSegment> segments;
+  Polygon2 outer, hole;
+};
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>, CGAL::Exact_predicates_tag>;
+
+double distanceToPolygon(const Polygon2& p, const Eigen::Vector2d& q) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < p.size(); ++k) {
+    const Eigen::Vector2d a = p[k], d = p[(k + 1) % p.size()] - a;
+    const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (a + t * d - q).norm());
+  }
+  return best;
+}
+
+bool insideRegion(const Region& r, const Eigen::Vector2d& q) { return contains(r.outer, q) && (r.hole.empty() || !contains(r.hole, q)); }
+
+// An irregular triangulation of the shape: boundary samples about h apart, jittered interior
+// grid points, constrained Delaunay; vertices on the truth (plus normal noise of `noise`).
+Region makeRegion(const Shape& shape, const BSplineSurface& truth, double h, double noise, unsigned seed) {
+  Region r;
+  r.outer = shape.outer;
+  r.hole = shape.hole;
+  std::vector<Eigen::Vector2d> pts;
+  std::vector<std::vector<int>> sideVertices(shape.outer.size());
+  std::vector<std::vector<int>> loops(1);
+  auto sampleLoop = [&](const std::vector<Eigen::Vector2d>& poly, std::vector<int>& loop, bool recordSides) {
+    for (size_t k = 0; k < poly.size(); ++k) {
+      const Eigen::Vector2d a = poly[k], b = poly[(k + 1) % poly.size()];
+      const int n = std::max(1, static_cast<int>(std::round((b - a).norm() / h)));
+      for (int q = 0; q < n; ++q) {
+        if (recordSides) {
+          sideVertices[k].push_back(static_cast<int>(pts.size()));
+          if (q == 0 && k > 0) sideVertices[k - 1].push_back(static_cast<int>(pts.size()));
+        }
+        loop.push_back(static_cast<int>(pts.size()));
+        pts.push_back(a + (b - a) * q / n);
+      }
+    }
+    if (recordSides) sideVertices.back().push_back(loop.front());
+  };
+  sampleLoop(shape.outer, loops[0], true);
+  if (!shape.hole.empty()) {
+    loops.emplace_back();
+    sampleLoop(shape.hole, loops[1], false);
+  }
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.3 * h, 0.3 * h);
+  for (double u = h / 2; u < 4; u += h)
+    for (double v = h / 2; v < 2; v += h) {
+      const Eigen::Vector2d q(u + jitter(rng), v + jitter(rng));
+      if (!insideRegion(r, q) || distanceToPolygon(r.outer, q) < 0.5 * h || (!r.hole.empty() && distanceToPolygon(r.hole, q) < 0.5 * h)) continue;
+      pts.push_back(q);
+    }
+  CDT cdt;
+  std::vector<CDT::Vertex_handle> vh(pts.size());
+  for (size_t k = 0; k < pts.size(); ++k) {
+    vh[k] = cdt.insert(CDT::Point(pts[k].x(), pts[k].y()));
+    vh[k]->info() = static_cast<int>(k);
+  }
+  for (const auto& loop : loops)
+    for (size_t k = 0; k < loop.size(); ++k) cdt.insert_constraint(vh[loop[k]], vh[loop[(k + 1) % loop.size()]]);
+  std::vector<Eigen::Vector3i> tris;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const int a = f->vertex(0)->info(), b = f->vertex(1)->info(), c = f->vertex(2)->info();
+    // Points sampled along one straight side are collinear only up to round-off: CGAL may close
+    // three of them with a sliver, which is not part of the region.
+    const Eigen::Vector2d e1 = pts[b] - pts[a], e2 = pts[c] - pts[a];
+    if (std::abs(e1.x() * e2.y() - e1.y() * e2.x()) < 1e-6 * h * h) continue;
+    if (insideRegion(r, (pts[a] + pts[b] + pts[c]) / 3)) tris.emplace_back(a, b, c);
+  }
+  std::normal_distribution<double> gauss(0, 1);
+  r.mesh.vertices.resize(static_cast<Eigen::Index>(pts.size()), 3);
+  r.truthUV.resize(static_cast<Eigen::Index>(pts.size()), 2);
+  for (size_t k = 0; k < pts.size(); ++k) {
+    const auto d = truth.derivatives(pts[k].x(), pts[k].y(), 1);
+    const Eigen::Vector3d n = d[1][0].cross(d[0][1]).normalized();
+    r.mesh.vertices.row(static_cast<Eigen::Index>(k)) = (d[0][0] + noise * gauss(rng) * n).transpose();
+    r.truthUV.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
+  }
+  r.mesh.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (size_t k = 0; k < tris.size(); ++k) r.mesh.triangles.row(static_cast<Eigen::Index>(k)) = tris[k].transpose();
+  for (size_t k = 0; k < shape.labels.size(); ++k) {
+    const char l = shape.labels[k];
+    if (l == '-') continue;
+    const Side side = l == 'S' ? Side::South : l == 'E' ? Side::East : l == 'N' ? Side::North : Side::West;
+    // Neighbouring sides with one label (the ellipse's arcs) make one segment.
+    if (k > 0 && shape.labels[k - 1] == l) {
+      auto& last = r.segments.back().vertices;
+      last.insert(last.end(), sideVertices[k].begin() + 1, sideVertices[k].end());
+    } else {
+      r.segments.push_back({side, sideVertices[k]});
+    }
+  }
+  return r;
+}
+
+// ---- measures ----
+
+struct Measure {
+  bool failed = false;
+  std::string why;
+  double dataMax = 0, dataRms = 0, truthToFit = 0, fitToTruth = 0, log10Cond = 0, seconds = 0;
+  int weak = 0;
+};
+
+// Weak control points and the log10 condition of BᵀB for the points' parameters.
+void supportAndCondition(const BSplineSurface& s, const Eigen::MatrixX2d& uv, Measure& m) {
+  const int nu = s.numU(), nv = s.numV(), pu = s.degreeU, pv = s.degreeV;
+  Eigen::MatrixXd N = Eigen::MatrixXd::Zero(nu * nv, nu * nv);
+  std::vector<int> support(nu * nv, 0);
+  for (Eigen::Index k = 0; k < uv.rows(); ++k) {
+    const double u = std::clamp(uv(k, 0), s.knotsU.front(), s.knotsU.back()), v = std::clamp(uv(k, 1), s.knotsV.front(), s.knotsV.back());
+    const int su = findSpan(s.knotsU, pu, u), sv = findSpan(s.knotsV, pv, v);
+    const Eigen::MatrixXd Bu = basisDerivatives(s.knotsU, pu, su, u, 0), Bv = basisDerivatives(s.knotsV, pv, sv, v, 0);
+    std::vector<std::pair<int, double>> row;
+    for (int a = 0; a <= pu; ++a)
+      for (int b = 0; b <= pv; ++b) row.emplace_back((su - pu + a) * nv + (sv - pv + b), Bu(0, a) * Bv(0, b));
+    for (const auto& [i, x] : row) {
+      ++support[i];
+      for (const auto& [j, y] : row) N(i, j) += x * y;
+    }
+  }
+  m.weak = static_cast<int>(std::count_if(support.begin(), support.end(), [](int c) { return c < 3; }));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(N, Eigen::EigenvaluesOnly);
+  const double lo = eig.eigenvalues().minCoeff(), hi = eig.eigenvalues().maxCoeff();
+  m.log10Cond = lo > 1e-15 * hi ? std::log10(hi / lo) : std::numeric_limits<double>::infinity();
+}
+
+// Distances from points to a surface by closest point (grid-seeded Newton per point).
+std::vector<double> distancesTo(const BSplineSurface& s, const std::vector<Eigen::Vector3d>& pts, std::vector<Eigen::Vector2d>* uvOut = nullptr) {
+  std::vector<double> d(pts.size());
+  if (uvOut) uvOut->resize(pts.size());
+  ProjectionOptions po;
+  po.gridCells = 16;
+  // Seed each point from a coarse grid of the surface, then Newton.
+  const int g = 24;
+  std::vector<Eigen::Vector2d> seeds;
+  std::vector<Eigen::Vector3d> seedPts;
+  for (int i = 0; i <= g; ++i)
+    for (int j = 0; j <= g; ++j) {
+      const double u = s.knotsU.front() + (s.knotsU.back() - s.knotsU.front()) * i / g, v = s.knotsV.front() + (s.knotsV.back() - s.knotsV.front()) * j / g;
+      seeds.emplace_back(u, v);
+      seedPts.push_back(s.point(u, v));
+    }
+  for (size_t k = 0; k < pts.size(); ++k) {
+    size_t best = 0;
+    for (size_t q = 1; q < seeds.size(); ++q)
+      if ((seedPts[q] - pts[k]).squaredNorm() < (seedPts[best] - pts[k]).squaredNorm()) best = q;
+    Eigen::Vector2d uv = seeds[best];
+    d[k] = projectPointFrom(s, pts[k], uv, po);
+    if (uvOut) (*uvOut)[k] = uv;
+  }
+  return d;
+}
+
+struct Case {
+  std::string name;
+  const Truth* truth;
+  Region region;
+  double diagonal;
+  std::vector<Eigen::Vector3d> bandTruthPoints;  // the truth sampled in the band
+  Eigen::Vector2d lo, hi;                        // the four-sided domain in the truth's parameters
+};
+
+void measureSurface(const Case& c, const BSplineSurface& s, const Eigen::MatrixX2d& fittedUV, Measure& m) {
+  std::vector<Eigen::Vector3d> data;
+  for (Eigen::Index k = 0; k < c.region.mesh.vertices.rows(); ++k) data.push_back(c.region.mesh.vertices.row(k).transpose());
+  const std::vector<double> dd = distancesTo(s, data);
+  double sum = 0;
+  for (double d : dd) {
+    m.dataMax = std::max(m.dataMax, d / c.diagonal);
+    sum += d * d;
+  }
+  m.dataRms = std::sqrt(sum / dd.size()) / c.diagonal;
+  for (double d : distancesTo(s, c.bandTruthPoints)) m.truthToFit = std::max(m.truthToFit, d / c.diagonal);
+  // The fit sampled over its whole domain; samples whose closest truth point lies in the band.
+  std::vector<Eigen::Vector3d> fitPts;
+  const int g = 60;
+  for (int i = 0; i <= g; ++i)
+    for (int j = 0; j <= g; ++j)
+      fitPts.push_back(s.point(s.knotsU.front() + (s.knotsU.back() - s.knotsU.front()) * i / g, s.knotsV.front() + (s.knotsV.back() - s.knotsV.front()) * j / g));
+  std::vector<Eigen::Vector2d> tuv;
+  const std::vector<double> ft = distancesTo(c.truth->surface, fitPts, &tuv);
+  for (size_t k = 0; k < fitPts.size(); ++k) {
+    const Eigen::Vector2d q = tuv[k];
+    const bool inDomain = q.x() >= c.lo.x() && q.x() <= c.hi.x() && q.y() >= c.lo.y() && q.y() <= c.hi.y();
+    if (inDomain && !insideRegion(c.region, q)) m.fitToTruth = std::max(m.fitToTruth, ft[k] / c.diagonal);
+  }
+  supportAndCondition(s, fittedUV, m);
+}
+
+double seconds(std::chrono::steady_clock::time_point t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+
+// Parameters on the points' best-fit plane (principal axes), as plain fitting takes them.
+Eigen::MatrixX2d planeParameters(const Eigen::MatrixX3d& p) {
+  const Eigen::RowVector3d c = p.colwise().mean();
+  const Eigen::MatrixX3d q = p.rowwise() - c;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(q.transpose() * q);
+  Eigen::MatrixX2d uv(p.rows(), 2);
+  uv.col(0) = q * eig.eigenvectors().col(2);
+  uv.col(1) = q * eig.eigenvectors().col(1);
+  return uv;
+}
+
+std::string fmt(double x, bool failed) {
+  if (failed) return "—";
+  if (std::isinf(x)) return "∞";
+  char b[32];
+  std::snprintf(b, sizeof b, x != 0 && (std::abs(x) < 1e-3 || std::abs(x) >= 1e4) ? "%.1e" : "%.4f", x);
+  return b;
+}
+
+// Mean curvature of the untrimmed surface over its domain as a picture (symmetric scale).
+void curvaturePicture(const BSplineSurface& s, const std::string& path, const std::string& title, double range) {
+  const int W = 360, H = 240;
+  RasterImage img(W, H + 30);
+  for (int x = 0; x < W; ++x)
+    for (int y = 0; y < H; ++y) {
+      const double u = s.knotsU.front() + (s.knotsU.back() - s.knotsU.front()) * (x + 0.5) / W;
+      const double v = s.knotsV.back() - (s.knotsV.back() - s.knotsV.front()) * (y + 0.5) / H;
+      const auto d = s.derivatives(u, v, 2);
+      const Eigen::Vector3d n = d[1][0].cross(d[0][1]).normalized();
+      const double E = d[1][0].dot(d[1][0]), F = d[1][0].dot(d[0][1]), G = d[0][1].dot(d[0][1]);
+      const double L = d[2][0].dot(n), M = d[1][1].dot(n), N = d[0][2].dot(n);
+      const double Hm = (E * N - 2 * F * M + G * L) / (2 * (E * G - F * F));
+      const double t = std::clamp(Hm / range, -1.0, 1.0);
+      const auto c = t < 0 ? std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(255 * (1 + t)), static_cast<std::uint8_t>(255 * (1 + t)), 255}
+                           : std::array<std::uint8_t, 3>{255, static_cast<std::uint8_t>(255 * (1 - t)), static_cast<std::uint8_t>(255 * (1 - t))};
+      img.set(x, y, c);
+    }
+  drawText(img, 4, H + 8, title, 2, {0, 0, 0});
+  writePng(img, path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = argc > 1 ? argv[1] : "bench-out/fitting";
+  const std::string approxScript = argc > 2 ? argv[2] : "tests/bench/approx_surface.py";
+  std::system(("mkdir -p '" + out + "'").c_str());
+  const std::vector<Truth> T = truths();
+  const std::vector<Shape> S = shapes();
+  // Twelve cases: every shape on two truths; the last on the wave is noisy.
+  const int pairs[12][2] = {{0, 0}, {0, 2}, {1, 1}, {1, 5}, {2, 3}, {2, 4}, {3, 2}, {3, 5}, {4, 1}, {4, 3}, {5, 4}, {0, 4}};
+  std::vector<Case> cases;
+  for (int k = 0; k < 12; ++k) {
+    const Shape& sh = S[pairs[k][0]];
+    const Truth& tr = T[pairs[k][1]];
+    const bool noisy = k == 11;
+    Case c;
+    c.truth = &tr;
+    Region probe = makeRegion(sh, tr.surface, 0.08, 0, 7u + k);
+    c.diagonal = (probe.mesh.vertices.colwise().maxCoeff() - probe.mesh.vertices.colwise().minCoeff()).norm();
+    c.region = noisy ? makeRegion(sh, tr.surface, 0.08, 2e-4 * c.diagonal, 7u + k) : probe;
+    c.name = sh.name + " / " + tr.name + (noisy ? " (noise 2e-4)" : "");
+    c.lo = c.region.truthUV.colwise().minCoeff().transpose();
+    c.hi = c.region.truthUV.colwise().maxCoeff().transpose();
+    const int g = 80;
+    for (int i = 0; i <= g; ++i)
+      for (int j = 0; j <= g / 2; ++j) {
+        const Eigen::Vector2d q(c.lo.x() + (c.hi.x() - c.lo.x()) * i / g, c.lo.y() + (c.hi.y() - c.lo.y()) * j / (g / 2));
+        if (!insideRegion(c.region, q) && distanceToPolygon(c.region.outer, q) > 1e-9) c.bandTruthPoints.push_back(tr.surface.point(q.x(), q.y()));
+      }
+    cases.push_back(std::move(c));
+  }
+
+  // The peer: approxSurface in freecadcmd on the same points, written out first.
+  for (size_t k = 0; k < cases.size(); ++k) {
+    std::ofstream f(out + "/case" + std::to_string(k) + ".xyz");
+    f.precision(17);
+    for (Eigen::Index v = 0; v < cases[k].region.mesh.vertices.rows(); ++v)
+      f << cases[k].region.mesh.vertices(v, 0) << ' ' << cases[k].region.mesh.vertices(v, 1) << ' ' << cases[k].region.mesh.vertices(v, 2) << '\n';
+  }
+  const std::string cmd = "freecadcmd -c \"import sys; sys.argv=['approx', '" + out + "', '" + std::to_string(cases.size()) + "', '" +
+                          std::to_string(kControl) + "']; exec(open('" + approxScript + "').read())\" > '" + out + "/approx.log' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::map<std::string, double> peerSeconds;
+  {
+    std::ifstream f(out + "/approx_times.txt");
+    std::string key;
+    double s;
+    while (f >> key >> s) peerSeconds[key] = s;
+  }
+  if (rc != 0 || peerSeconds.empty()) std::fprintf(stderr, "approxSurface run failed (see %s/approx.log)\n", out.c_str());
+
+  const std::vector<std::string> methods = {"HoleFill labeled + G2 extension", "HoleFill labeled, no extension", "least squares (plane param.)",
+                                            "least squares + thin plate 1e-4", "approxSurface (default smoothing)", "approxSurface (no smoothing)"};
+  std::vector<std::vector<Measure>> all(methods.size());
+  std::printf("| case | method | data max | data RMS | band truth→fit | band fit→truth | weak ctrl pts | log10 cond | time (s) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const Case& c = cases[k];
+    const Eigen::MatrixX3d& P = c.region.mesh.vertices;
+    for (size_t mi = 0; mi < methods.size(); ++mi) {
+      Measure m;
+      try {
+        BSplineSurface s;
+        Eigen::MatrixX2d fittedUV;
+        const auto t0 = std::chrono::steady_clock::now();
+        if (mi <= 1) {
+          LabeledFitOptions o;
+          o.fit.controlU = o.fit.controlV = kControl;
+          o.extend = mi == 0;
+          const LabeledFitResult r = fitLabeled(c.region.mesh, c.region.segments, o);
+          m.seconds = seconds(t0);
+          s = r.fit.surface;
+          fittedUV = mi == 0 ? r.extension.uv : r.parameterization.uv;
+          if (k == 0 || k == 7) {
+            char name[64];
+            std::snprintf(name, sizeof name, "/case%zu_%s.png", k, mi == 0 ? "ours" : "ours_noext");
+            curvaturePicture(s, out + name, methods[mi], 0.5);
+          }
+        } else if (mi <= 3) {
+          const Eigen::MatrixX2d uv = planeParameters(P);
+          TensorFitOptions o;
+          o.controlU = o.controlV = kControl;
+          o.smoothing = mi == 2 ? 0 : 1e-4;
+          s = fitTensorProduct(P, uv, c.region.mesh, uv, o).surface;
+          m.seconds = seconds(t0);
+          fittedUV = uv;
+          if ((k == 0 || k == 7) && mi == 3) curvaturePicture(s, out + "/case" + std::to_string(k) + "_thinplate.png", methods[mi], 0.5);
+        } else {
+          const std::string key = "case" + std::to_string(k) + (mi == 4 ? "_smooth" : "_raw");
+          TopoDS_Shape shape;
+          BRep_Builder b;
+          if (!peerSeconds.count(key) || !BRepTools::Read(shape, (out + "/" + key + ".brep").c_str(), b)) throw Error("approxSurface gave no surface");
+          TopExp_Explorer ex(shape, TopAbs_FACE);
+          if (!ex.More()) throw Error("approxSurface gave no face");
+          const Handle(Geom_BSplineSurface) g = GeomConvert::SurfaceToBSplineSurface(BRep_Tool::Surface(TopoDS::Face(ex.Current())));
+          s = fromOcct(g);
+          m.seconds = peerSeconds[key];
+          std::vector<Eigen::Vector3d> data;
+          for (Eigen::Index v = 0; v < P.rows(); ++v) data.push_back(P.row(v).transpose());
+          std::vector<Eigen::Vector2d> puv;
+          distancesTo(s, data, &puv);
+          fittedUV.resize(P.rows(), 2);
+          for (Eigen::Index v = 0; v < P.rows(); ++v) fittedUV.row(v) = puv[v].transpose();
+          if ((k == 0 || k == 7) && mi == 4) curvaturePicture(s, out + "/case" + std::to_string(k) + "_approx.png", methods[mi], 0.5);
+        }
+        if (!s.poles.allFinite()) throw Error("non-finite control points");
+        measureSurface(c, s, fittedUV, m);
+      } catch (const std::exception& e) {
+        m.failed = true;
+        m.why = e.what();
+      }
+      all[mi].push_back(m);
+      std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.name.c_str(), methods[mi].c_str(), fmt(m.dataMax, m.failed).c_str(),
+                  fmt(m.dataRms, m.failed).c_str(), fmt(m.truthToFit, m.failed).c_str(), fmt(m.fitToTruth, m.failed).c_str(),
+                  m.failed ? ("failed: " + m.why).c_str() : std::to_string(m.weak).c_str(), fmt(m.log10Cond, m.failed).c_str(), fmt(m.seconds, m.failed).c_str());
+      std::fflush(stdout);
+    }
+  }
+  // Summary: medians (and worst) over the cases a method did not fail on.
+  std::printf("\n| method | failed | data max (median / worst) | band truth→fit (median / worst) | band fit→truth (median / worst) | weak ctrl pts (median / worst) | log10 cond (median / worst) | time (median, s) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  for (size_t mi = 0; mi < methods.size(); ++mi) {
+    std::vector<double> dm, tf, ft, wk, cn, tm;
+    int failed = 0;
+    for (const Measure& m : all[mi]) {
+      if (m.failed) {
+        ++failed;
+        continue;
+      }
+      dm.push_back(m.dataMax), tf.push_back(m.truthToFit), ft.push_back(m.fitToTruth), wk.push_back(m.weak), cn.push_back(m.log10Cond), tm.push_back(m.seconds);
+    }
+    auto med = [](std::vector<double> v) {
+      if (v.empty()) return std::string("—");
+      std::sort(v.begin(), v.end());
+      return fmt(v[v.size() / 2], false) + " / " + fmt(v.back(), false);
+    };
+    auto median = [](std::vector<double> v) {
+      if (v.empty()) return std::string("—");
+      std::sort(v.begin(), v.end());
+      return fmt(v[v.size() / 2], false);
+    };
+    std::printf("| %s | %d of %zu | %s | %s | %s | %s | %s | %s |\n", methods[mi].c_str(), failed, all[mi].size(), med(dm).c_str(), med(tf).c_str(),
+                med(ft).c_str(), med(wk).c_str(), med(cn).c_str(), median(tm).c_str());
+  }
+  return 0;
+}
