@@ -4,7 +4,8 @@ import FreeCADGui
 
 import HoleFillGui
 
-COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurface", "HoleFill_ImportCage", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
+COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurface", "HoleFill_ImportCage", "HoleFill_LabelBoundary",
+            "HoleFill_FitLabeled", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
 
 
 class FillHoleCommand:
@@ -67,6 +68,53 @@ class GnurbsSurfaceCommand:
         except Exception as e:  # not a quad cage, or a core error: say it, change nothing
             inspect_panels._message("G-NURBS surface: %s" % e)
             task_gnurbs.remove_overlay()
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
+class LabelBoundaryCommand:
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon("HoleFill_Labels.svg"),
+                "MenuText": "Label boundary",
+                "ToolTip": "Label the boundary of a mesh region North/East/South/West for a labeled fit.\n"
+                           "Select a mesh region (or its labels to edit them), run, click boundary edges to cycle\n"
+                           "their segment's label, click boundary vertices to split or merge segments."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from HoleFillGui import inspect_panels, task_labels
+        try:
+            mesh, existing = task_labels.mesh_from_selection()
+            panel = task_labels.LabelPanel(mesh, existing=existing)
+        except task_labels.SelectionError as e:
+            inspect_panels._message(str(e))
+            return
+        except Exception as e:  # a closed mesh, or a core error: say it, change nothing
+            inspect_panels._message("Label boundary: %s" % e)
+            task_labels.remove_overlay()
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
+class FitLabeledCommand:
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon("HoleFill_LabeledFit.svg"),
+                "MenuText": "Fit labeled surface",
+                "ToolTip": "Fit one trimmed B-spline face to a labeled mesh region: labeled parameterization,\n"
+                           "extension to the four-sided domain, tensor-product fit. Select the boundary labels\n"
+                           "(or the mesh); the fit follows the labels when they change."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from HoleFillGui import inspect_panels, task_labeled_fit
+        try:
+            panel = task_labeled_fit.FitPanel(task_labeled_fit.labels_from_selection())
+        except task_labeled_fit.SelectionError as e:
+            inspect_panels._message(str(e))
             return
         FreeCADGui.Control.showDialog(panel)
 
@@ -157,6 +205,8 @@ def register():
     FreeCADGui.addCommand("HoleFill_FillMeshHoles", FillMeshHolesCommand())
     FreeCADGui.addCommand("HoleFill_GnurbsSurface", GnurbsSurfaceCommand())
     FreeCADGui.addCommand("HoleFill_ImportCage", ImportCageCommand())
+    FreeCADGui.addCommand("HoleFill_LabelBoundary", LabelBoundaryCommand())
+    FreeCADGui.addCommand("HoleFill_FitLabeled", FitLabeledCommand())
     FreeCADGui.addCommand("HoleFill_CurvatureMap", CurvatureMapCommand())
     FreeCADGui.addCommand("HoleFill_ZebraStripes", ZebraStripesCommand())
     FreeCADGui.addCommand("HoleFill_ContinuityCheck", ContinuityCheckCommand())

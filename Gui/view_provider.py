@@ -36,3 +36,83 @@ class FillViewProvider:
 
     def __setstate__(self, state):
         return None
+
+
+class LabelsViewProvider:
+    """View provider of BoundaryLabels: each segment's polyline in its label's colour (N red, E
+    green, S blue, W amber, unlabeled grey), thick, with its letter at the segment's middle."""
+
+    def __init__(self, vobj):
+        vobj.Proxy = self
+        vobj.LineWidth = 5
+        vobj.PointSize = 1
+
+    def attach(self, vobj):
+        from pivy import coin
+        self.Object = vobj.Object
+        self.letters = coin.SoSeparator()
+        self.letters.setName("HoleFillLabelLetters")
+        vobj.RootNode.addChild(self.letters)
+
+    def updateData(self, obj, prop):
+        if prop in ("Shape", "Labels"):
+            self._paint(obj)
+
+    def _paint(self, obj):
+        from pivy import coin
+        from HoleFill.labeled import LABEL_COLORS
+        vobj = obj.ViewObject
+        if vobj is None or obj.Shape.isNull():
+            return
+        colors = []
+        for wire, label in zip(obj.Shape.Wires, obj.Labels):
+            colors += [LABEL_COLORS.get(label, LABEL_COLORS["-"])] * len(wire.Edges)
+        if len(colors) == len(obj.Shape.Edges):
+            vobj.LineColorArray = colors
+        letters = getattr(self, "letters", None)
+        if letters is None:
+            return
+        letters.removeAllChildren()
+        depth = coin.SoDepthBuffer()
+        depth.test = False
+        letters.addChild(depth)
+        for wire, label in zip(obj.Shape.Wires, obj.Labels):
+            if label == "-":
+                continue
+            edges = wire.Edges
+            mid = edges[len(edges) // 2].valueAt(edges[len(edges) // 2].FirstParameter)
+            sep = coin.SoSeparator()
+            col = coin.SoBaseColor()
+            col.rgb.setValue(*LABEL_COLORS[label])
+            tr = coin.SoTranslation()
+            tr.translation.setValue(mid.x, mid.y, mid.z)
+            font = coin.SoFont()
+            font.size = 22
+            text = coin.SoText2()
+            text.string = label
+            for n in (col, tr, font, text):
+                sep.addChild(n)
+            letters.addChild(sep)
+
+    def getIcon(self):
+        return HoleFillGui.icon("HoleFill_Labels.svg")
+
+    def setEdit(self, vobj, mode=0):
+        import FreeCADGui
+        from HoleFillGui import task_labels
+        FreeCADGui.Control.showDialog(task_labels.LabelPanel(vobj.Object.Source, existing=vobj.Object))
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        import FreeCADGui
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def doubleClicked(self, vobj):
+        return self.setEdit(vobj)
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None

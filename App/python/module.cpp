@@ -381,16 +381,21 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("path"), "A quad cage OBJ (with # sharp/# knot/# anchor lines) as 0-based (vertices, quads, knots, sharp, anchors).");
   m.def("fitLabeled", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::string& labelsJson,
-                         int controlU, int controlV, const std::string& extension, int margin) {
+                         int controlU, int controlV, const std::string& extension, int margin, double fairness, double smoothing,
+                         double framePlacement) {
     return guarded([&] {
       LabeledFitOptions o;
       o.fit.controlU = controlU;
       o.fit.controlV = controlV;
+      o.fit.smoothing = smoothing;
       if (extension == "G1") o.extension.order = 2;
       else if (extension == "G2") o.extension.order = 3;
       else if (extension == "none") o.extend = false;
       else throw Error("extension must be G1, G2 or none, got '" + extension + "'");
+      if (!(fairness >= 0 && smoothing >= 0 && framePlacement >= 0)) throw Error("the weights must be zero or positive");
       o.extension.marginLayers = margin;
+      o.extension.fairness = fairness;
+      o.parameterization.framePlacement = framePlacement;
       const std::vector<LabeledSegment> labels = parseLabelsJson(labelsJson);
       LabeledFitResult r;
       {
@@ -398,11 +403,22 @@ PYBIND11_MODULE(HoleFillApp, m) {
         r = fitLabeled(TriangleMesh{vertices, triangles}, labels, o);
       }
       const TopoDS_Face untrimmed = BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face();
-      return py::make_tuple(py::bytes(shapeToBrepString(r.fit.face)), py::bytes(shapeToBrepString(untrimmed)), r.toJson(), r.parameterization.uv);
+      // Previews: the guiding frame's curves (64 points per labeled side) and the extended mesh.
+      py::list frame;
+      const GuidingFrame& f = r.parameterization.frame;
+      for (int side = 0; side < 4; ++side) {
+        if (!f.labeled[side]) continue;
+        Eigen::MatrixX3d pts(65, 3);
+        for (int k = 0; k <= 64; ++k) pts.row(k) = f.point(static_cast<Side>(side), k / 64.0).transpose();
+        frame.append(py::make_tuple("SENW"[side], pts));
+      }
+      return py::make_tuple(py::bytes(shapeToBrepString(r.fit.face)), py::bytes(shapeToBrepString(untrimmed)), r.toJson(), r.parameterization.uv,
+                            frame, r.extension.mesh.vertices, Eigen::MatrixXi(r.extension.mesh.triangles));
     });
   }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
-     py::arg("extension") = "G2", py::arg("margin") = 0,
-     "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex).");
+     py::arg("extension") = "G2", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
+     "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
+     "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
   m.def("sampleCageNames", &cages::sampleCageNames);
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
         py::arg("name"), "OBJ text of a bundled sample cage.");

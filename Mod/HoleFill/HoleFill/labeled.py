@@ -14,7 +14,7 @@ import json
 
 import HoleFillApp
 
-__all__ = ["fitLabeled"]
+__all__ = ["fitLabeled", "boundaryLoop", "cornerSplits", "segmentsOf", "makeBoundaryLabels", "makeLabeledFit"]
 
 
 def _labelsJson(labels):
@@ -25,15 +25,251 @@ def _labelsJson(labels):
     return json.dumps({"segments": [{"label": str(l), "vertices": [int(v) for v in vs]} for l, vs in labels]})
 
 
-def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0):
+def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
-    S, W. extension: "G2" (default), "G1" or "none" (fit the region alone, for comparison)."""
+    S, W. extension: "G2" (default), "G1" or "none" (fit the region alone, for comparison).
+    Weights: fairness (isocurve fairness of the extension, relative to its polyharmonic energy),
+    smoothing (thin-plate term of the fit), framePlacement (how firmly labeled vertices keep the
+    guiding frame's placement along their sides). The report also holds "uv" (per vertex),
+    "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
+    triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
     from HoleFill import _shape
     v, t = _arrays(mesh)
-    face, untrimmed, report, uv = HoleFillApp.fitLabeled(v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]),
-                                                        str(extension), int(margin))
+    face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(
+        v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]), str(extension), int(margin),
+        float(fairness), float(smoothing), float(framePlacement))
     rep = json.loads(report)
     rep["uv"] = uv
+    rep["frame"] = frame
+    rep["extended"] = (ev, et)
     return _shape(face), _shape(untrimmed), rep
+
+
+# -- boundary segments and labels -------------------------------------------------------------
+
+LABELS = ("N", "E", "S", "W")
+LABEL_COLORS = {"N": (0.85, 0.10, 0.10), "E": (0.10, 0.55, 0.10), "S": (0.10, 0.25, 0.90), "W": (0.80, 0.55, 0.00),
+                "-": (0.45, 0.45, 0.45)}
+
+
+def boundaryLoop(mesh):
+    """The outer boundary loop of a mesh region (the longest), as 0-based point indices, and
+    its points: (loop, points). Raises HoleFillError for a closed or empty mesh."""
+    from HoleFill.meshfill import meshHoles
+    holes = meshHoles(mesh)
+    if not holes:
+        raise HoleFillApp.HoleFillError("the mesh has no open boundary: label the boundary of a trimmed region, not a closed mesh")
+    return list(holes[0]["loop"]), [tuple(p) for p in holes[0]["points"]]
+
+
+def cornerSplits(points, angle=35.0):
+    """Loop positions where the boundary turns by more than `angle` degrees (measured between
+    the directions to the neighbours two steps away, so a jagged scan edge is not a corner),
+    keeping the sharpest of neighbouring candidates."""
+    import math
+    n = len(points)
+    if n < 6:
+        return list(range(n))
+
+    def sub(a, b):
+        return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+    def turn(k):
+        a, b = sub(points[k], points[(k - 2) % n]), sub(points[(k + 2) % n], points[k])
+        la, lb = math.sqrt(sum(x * x for x in a)), math.sqrt(sum(x * x for x in b))
+        if la == 0 or lb == 0:
+            return 0.0
+        c = sum(x * y for x, y in zip(a, b)) / (la * lb)
+        return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+
+    t = [turn(k) for k in range(n)]
+    return [k for k in range(n) if t[k] > angle and t[k] >= t[(k - 1) % n] and t[k] > t[(k + 1) % n]]
+
+
+def segmentsOf(loopLength, splits):
+    """Segments as lists of loop positions, from sorted split positions (each segment starts at a
+    split and ends at the next, sharing it); one segment over the whole loop without splits."""
+    s = sorted(set(int(x) % loopLength for x in splits))
+    if not s:
+        return [list(range(loopLength)) + [0]]
+    out = []
+    for i, a in enumerate(s):
+        b = s[(i + 1) % len(s)]
+        seg, k = [a], a
+        while True:
+            k = (k + 1) % loopLength
+            seg.append(k)
+            if k == b:
+                break
+        out.append(seg)
+    return out
+
+
+def labelsJsonOf(loop, splits, labels):
+    """{"segments": [...]} of the labeled segments (unlabeled ones left out) for fitLabeled."""
+    segs = []
+    for seg, label in zip(segmentsOf(len(loop), splits), labels):
+        if label in LABELS:
+            vs = [loop[k] for k in seg]
+            if vs[0] == vs[-1]:
+                vs = vs[:-1]
+            segs.append({"label": label, "vertices": vs})
+    return json.dumps({"segments": segs})
+
+
+class BoundaryLabelsFeature:
+    """A mesh region's boundary cut into segments labeled N/E/S/W (or unlabeled), shown as
+    coloured polylines; what LabeledFit objects fit by. Changing Splits or Labels recomputes the
+    fits that use it."""
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setupProperties(obj)
+
+    def setupProperties(self, obj):
+        props = obj.PropertiesList
+
+        def add(kind, name, group, doc):
+            if name not in props:
+                obj.addProperty(kind, name, group, doc)
+
+        add("App::PropertyLink", "Source", "Labels", "The mesh region (Mesh feature) whose boundary is labeled")
+        add("App::PropertyIntegerList", "Loop", "Labels", "The outer boundary loop (0-based mesh points, in order)")
+        add("App::PropertyIntegerList", "Splits", "Labels", "Loop positions where segments start")
+        add("App::PropertyStringList", "Labels", "Labels", "Per segment, from the first split on: N, E, S, W or -")
+        add("App::PropertyString", "LabelsJson", "Labels", "The labeled segments as fitLabeled takes them")
+        obj.setEditorMode("LabelsJson", 1)
+        obj.setEditorMode("Loop", 1)
+
+    def onDocumentRestored(self, obj):
+        self.setupProperties(obj)
+
+    def execute(self, obj):
+        import FreeCAD
+        import Part
+        if obj.Source is None or not hasattr(obj.Source, "Mesh"):
+            raise HoleFillApp.HoleFillError("the boundary labels have no source mesh")
+        loop, points = boundaryLoop(obj.Source.Mesh)
+        if list(obj.Loop) != loop:
+            raise HoleFillApp.HoleFillError("the mesh's boundary changed since it was labeled: label it again")
+        segs = segmentsOf(len(loop), obj.Splits)
+        if len(obj.Labels) != len(segs):
+            raise HoleFillApp.HoleFillError("%d labels for %d segments" % (len(obj.Labels), len(segs)))
+        for l in obj.Labels:
+            if l not in LABELS and l != "-":
+                raise HoleFillApp.HoleFillError("label '%s' is not N, E, S, W or -" % l)
+        wires = []
+        for seg in segs:
+            wires.append(Part.makePolygon([FreeCAD.Vector(*points[k]) for k in seg]))
+        obj.Shape = Part.makeCompound(wires)
+        obj.LabelsJson = labelsJsonOf(loop, obj.Splits, list(obj.Labels))
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def makeBoundaryLabels(meshObj, splits=None, labels=None, cornerAngle=35.0, name="BoundaryLabels"):
+    """Boundary labels of a Mesh feature in one undo step: segments split at `splits` (loop
+    positions; default: corners turning more than cornerAngle), `labels` one per segment (default
+    all '-'). The mesh is only read."""
+    import FreeCAD
+    if meshObj is None or not hasattr(meshObj, "Mesh"):
+        raise HoleFillApp.HoleFillError("makeBoundaryLabels needs a Mesh feature")
+    loop, points = boundaryLoop(meshObj.Mesh)
+    if splits is None:
+        splits = cornerSplits(points, cornerAngle)
+    count = len(segmentsOf(len(loop), splits))
+    labels = list(labels) if labels is not None else ["-"] * count
+
+    def setup(obj):
+        BoundaryLabelsFeature(obj)
+        obj.Source = meshObj
+        obj.Loop = loop
+        obj.Splits = sorted(set(int(s) for s in splits))
+        obj.Labels = labels
+        if FreeCAD.GuiUp:
+            from HoleFillGui import view_provider
+            view_provider.LabelsViewProvider(obj.ViewObject)
+
+    from HoleFill.transaction import addParametric
+    return addParametric(meshObj.Document, "Label boundary", name, setup, "the boundary labels")
+
+
+class LabeledFitFeature:
+    """A trimmed B-spline face fitted to the labels' mesh region (fitLabeled); recomputes when the
+    labels, the mesh or the options change. The untrimmed surface is kept in Untrimmed."""
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setupProperties(obj)
+
+    def setupProperties(self, obj):
+        props = obj.PropertiesList
+
+        def add(kind, name, group, doc, default=None):
+            if name not in props:
+                obj.addProperty(kind, name, group, doc)
+                if default is not None:
+                    setattr(obj, name, default)
+
+        add("App::PropertyLink", "Labels", "Fit", "The boundary labels (and through them the mesh region)")
+        add("App::PropertyIntegerConstraint", "ControlPointsU", "Fit", "Control points along u (cubic, at least 4)", (12, 4, 200, 1))
+        add("App::PropertyIntegerConstraint", "ControlPointsV", "Fit", "Control points along v (cubic, at least 4)", (12, 4, 200, 1))
+        if "Extension" not in props:
+            obj.addProperty("App::PropertyEnumeration", "Extension", "Fit", "Extension to the four-sided domain: G2, G1 or none")
+            obj.Extension = ["G2", "G1", "none"]
+        add("App::PropertyIntegerConstraint", "Margin", "Fit", "Grid layers added around the domain", (0, 0, 50, 1))
+        add("App::PropertyFloat", "Fairness", "Weights", "Isocurve fairness of the extension", 1e-2)
+        add("App::PropertyFloat", "Smoothing", "Weights", "Thin-plate term of the fit", 1e-6)
+        add("App::PropertyFloat", "FramePlacement", "Weights", "How firmly labeled vertices keep the frame's placement", 1.0)
+        add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
+        add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
+        for n in ("Untrimmed", "Report"):
+            obj.setEditorMode(n, 1)
+
+    def onDocumentRestored(self, obj):
+        self.setupProperties(obj)
+
+    def execute(self, obj):
+        lab = obj.Labels
+        if lab is None or not hasattr(lab, "LabelsJson") or lab.Source is None:
+            raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
+        face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
+                                          obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement)
+        obj.Shape = face
+        obj.Untrimmed = untrimmed
+        for k in ("uv", "frame", "extended"):
+            rep.pop(k, None)
+        obj.Report = json.dumps(rep)
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
+                   name="LabeledFit"):
+    """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
+    import FreeCAD
+    if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
+        raise HoleFillApp.HoleFillError("makeLabeledFit needs a BoundaryLabels object (HoleFill → Label boundary)")
+
+    def setup(obj):
+        LabeledFitFeature(obj)
+        obj.Labels = labelsObj
+        obj.ControlPointsU, obj.ControlPointsV = int(controlPoints[0]), int(controlPoints[1])
+        obj.Extension = str(extension)
+        obj.Margin = int(margin)
+        obj.Fairness, obj.Smoothing, obj.FramePlacement = float(fairness), float(smoothing), float(framePlacement)
+        if FreeCAD.GuiUp:
+            obj.ViewObject.Proxy = 0
+
+    from HoleFill.transaction import addParametric
+    return addParametric(labelsObj.Document, "Fit labeled surface", name, setup, "the labeled fit")

@@ -1,0 +1,200 @@
+"""Task panel of "Fit labeled surface": for a BoundaryLabels object (or a mesh that has one),
+the options of the labeled fit (control points, G2/G1/no extension, margin, the weights) with a
+preview in the 3D view of the guiding frame (blue curves), the extended mesh (grey wireframe of
+the triangles added around the region) and the trimmed surface (translucent green); the status
+line carries the fit's numbers. OK creates the parametric LabeledFit object (one undo step),
+which recomputes when the labels change; Cancel changes nothing."""
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore, QtWidgets
+
+from HoleFillGui import scene_overlay
+
+OVERLAY = "HoleFillLabeledFit"
+
+
+class SelectionError(Exception):
+    pass
+
+
+def labels_from_selection():
+    sel = FreeCADGui.Selection.getSelection()
+    if len(sel) == 1 and hasattr(sel[0], "LabelsJson"):
+        return sel[0]
+    if len(sel) == 1 and hasattr(sel[0], "Mesh"):
+        found = [o for o in sel[0].Document.Objects if hasattr(o, "LabelsJson") and o.Source == sel[0]]
+        if found:
+            return found[-1]
+        raise SelectionError("%s has no boundary labels yet: use HoleFill → Label boundary first." % sel[0].Label)
+    raise SelectionError("Select the boundary labels of a mesh region (made by HoleFill → Label boundary), or the mesh itself.")
+
+
+def remove_overlay():
+    scene_overlay.remove(OVERLAY)
+
+
+class FitPanel:
+    def __init__(self, labelsObj):
+        self.labels = labelsObj
+        self.form = QtWidgets.QWidget()
+        self.form.setWindowTitle("Fit labeled surface")
+        layout = QtWidgets.QFormLayout(self.form)
+        self.ctrlU, self.ctrlV = QtWidgets.QSpinBox(), QtWidgets.QSpinBox()
+        for name, w in (("HoleFillFitCtrlU", self.ctrlU), ("HoleFillFitCtrlV", self.ctrlV)):
+            w.setObjectName(name)
+            w.setRange(4, 200)
+            w.setValue(12)
+        layout.addRow("Control points u:", self.ctrlU)
+        layout.addRow("Control points v:", self.ctrlV)
+        self.extension = QtWidgets.QComboBox()
+        self.extension.setObjectName("HoleFillFitExtension")
+        self.extension.addItems(["G2", "G1", "none"])
+        layout.addRow("Extension:", self.extension)
+        self.margin = QtWidgets.QSpinBox()
+        self.margin.setObjectName("HoleFillFitMargin")
+        self.margin.setRange(0, 50)
+        layout.addRow("Margin layers:", self.margin)
+        self.weights = {}
+        for key, label, value in (("fairness", "Isocurve fairness:", 1e-2), ("smoothing", "Thin-plate smoothing:", 1e-6),
+                                  ("framePlacement", "Frame placement:", 1.0)):
+            w = QtWidgets.QDoubleSpinBox()
+            w.setObjectName("HoleFillFit_" + key)
+            w.setDecimals(8)
+            w.setRange(0, 1e6)
+            w.setValue(value)
+            layout.addRow(label, w)
+            self.weights[key] = w
+        self.show = {}
+        for key, label in (("frame", "Show the guiding frame"), ("extended", "Show the extended mesh"), ("surface", "Show the surface")):
+            c = QtWidgets.QCheckBox(label)
+            c.setObjectName("HoleFillFitShow_" + key)
+            c.setChecked(True)
+            c.toggled.connect(lambda *_: self.draw())
+            layout.addRow(c)
+            self.show[key] = c
+        preview = QtWidgets.QPushButton("Preview")
+        preview.setObjectName("HoleFillFitPreview")
+        preview.clicked.connect(self.preview)
+        layout.addRow(preview)
+        self.status = QtWidgets.QLabel()
+        self.status.setObjectName("HoleFillFitStatus")
+        self.status.setWordWrap(True)
+        layout.addRow(self.status)
+        self.result = None
+        self.preview()
+
+    def options(self):
+        return dict(controlPoints=(self.ctrlU.value(), self.ctrlV.value()), extension=self.extension.currentText(),
+                    margin=self.margin.value(), **{k: w.value() for k, w in self.weights.items()})
+
+    def preview(self):
+        import HoleFill
+        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        try:
+            self.result = HoleFill.fitLabeled(self.labels.Source.Mesh, self.labels.LabelsJson, **self.options())
+        except Exception as e:
+            self.result = None
+            self.status.setText("Fit failed: %s" % e)
+            remove_overlay()
+            return
+        finally:
+            QtWidgets.QApplication.restoreOverrideCursor()
+        r = self.result[2]
+        self.status.setText("Data max %.2e, RMS %.2e (of the region's diagonal); %d weak control points; log10 condition %.1f; "
+                            "%d extension vertices; face %s; %.2f s%s" % (
+                                r["data_max"], r["data_rms"], r["weak_control_points"], r["log10_condition"], r["extended_vertices"],
+                                "valid" if r["face_valid"] else "INVALID", r["seconds"],
+                                "".join("\nwarning: " + w for w in r["warnings"])))
+        self.draw()
+
+    def draw(self):
+        from pivy import coin
+        remove_overlay()
+        if self.result is None:
+            return
+        face, _, rep = self.result
+        root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.labels.Name), self.labels.Source.Placement)
+        if self.show["surface"].isChecked():
+            pts, tris = face.tessellate(0.002 * max(face.BoundBox.DiagonalLength, 1e-9))
+            sep = coin.SoSeparator()
+            sep.setName(OVERLAY + "_surface")
+            mat = coin.SoMaterial()
+            mat.diffuseColor.setValue(0.45, 0.75, 0.35)
+            mat.transparency.setValue(0.35)
+            coords = coin.SoCoordinate3()
+            coords.point.setValues(0, len(pts), [[p.x, p.y, p.z] for p in pts])
+            faces = coin.SoIndexedFaceSet()
+            idx = []
+            for t in tris:
+                idx += [t[0], t[1], t[2], -1]
+            faces.coordIndex.setValues(0, len(idx), idx)
+            for nd in (mat, coords, faces):
+                sep.addChild(nd)
+            root.addChild(sep)
+        ev, et = rep["extended"]
+        regionFacets = self.labels.Source.Mesh.CountFacets
+        if self.show["extended"].isChecked() and len(et) > regionFacets:
+            sep = coin.SoSeparator()
+            sep.setName(OVERLAY + "_extended")
+            col = coin.SoBaseColor()
+            col.rgb.setValue(0.35, 0.35, 0.35)
+            coords = coin.SoCoordinate3()
+            coords.point.setValues(0, len(ev), ev.tolist())
+            lines = coin.SoIndexedLineSet()
+            idx = []
+            for t in et[regionFacets:].tolist():
+                idx += [t[0], t[1], t[2], t[0], -1]
+            lines.coordIndex.setValues(0, len(idx), idx)
+            for nd in (col, coords, lines):
+                sep.addChild(nd)
+            root.addChild(sep)
+        if self.show["frame"].isChecked():
+            sep = coin.SoSeparator()
+            sep.setName(OVERLAY + "_frame")
+            col = coin.SoBaseColor()
+            col.rgb.setValue(0.1, 0.2, 0.95)
+            style = coin.SoDrawStyle()
+            style.lineWidth = 3
+            sep.addChild(col)
+            sep.addChild(style)
+            for _, curve in rep["frame"]:
+                coords = coin.SoCoordinate3()
+                coords.point.setValues(0, len(curve), curve.tolist())
+                line = coin.SoLineSet()
+                line.numVertices.setValue(len(curve))
+                sub = coin.SoSeparator()
+                sub.addChild(coords)
+                sub.addChild(line)
+                sep.addChild(sub)
+            root.addChild(sep)
+        scene_overlay.show(root)
+
+    # -- dialog ------------------------------------------------------------------------------
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+
+    def _close(self):
+        remove_overlay()
+        FreeCADGui.Control.closeDialog()
+
+    def accept(self):
+        import json
+        import HoleFill
+        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        try:
+            obj = HoleFill.makeLabeledFit(self.labels, **self.options())
+        except Exception as e:
+            self.status.setText("Failed: %s" % e)
+            FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
+            return False
+        finally:
+            QtWidgets.QApplication.restoreOverrideCursor()
+        r = json.loads(obj.Report)
+        FreeCAD.Console.PrintMessage("HoleFill: labeled fit %s of %s: data max %.2e, %d weak control points, log10 condition %.1f\n" % (
+            obj.Label, self.labels.Source.Label, r["data_max"], r["weak_control_points"], r["log10_condition"]))
+        self._close()
+        return True
+
+    def reject(self):
+        self._close()
+        return True

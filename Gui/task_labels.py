@@ -1,0 +1,264 @@
+"""Task panel of "Label boundary": the selected mesh region's outer boundary is drawn cut into
+segments (at corners turning more than the corner angle, to start with), each in its label's
+colour with its letter. Clicking near a boundary edge in the 3D view cycles that segment's label
+N → E → S → W → none; clicking on a boundary vertex splits the segment there, or merges the two
+segments meeting at an existing split. OK stores the labels on a BoundaryLabels document object
+(one undo step), which labeled fits follow; the mesh is never modified and Cancel changes
+nothing."""
+import math
+
+import FreeCAD
+import FreeCADGui
+from PySide2 import QtCore, QtWidgets
+
+from HoleFillGui import scene_overlay
+
+OVERLAY = "HoleFillLabels"
+CYCLE = ["N", "E", "S", "W", "-"]
+
+
+class SelectionError(Exception):
+    pass
+
+
+def mesh_from_selection():
+    """(mesh feature, existing BoundaryLabels or None) from the selection."""
+    sel = FreeCADGui.Selection.getSelection()
+    if len(sel) == 1 and hasattr(sel[0], "LabelsJson") and sel[0].Source is not None:
+        return sel[0].Source, sel[0]
+    meshes = [o for o in sel if hasattr(o, "Mesh") and hasattr(o.Mesh, "CountFacets")]
+    if len(meshes) != 1:
+        raise SelectionError("Select one mesh region (a Mesh object with an open boundary) to label its boundary."
+                             + (" The selection holds no mesh." if sel and not meshes else ""))
+    return meshes[0], None
+
+
+def remove_overlay():
+    scene_overlay.remove(OVERLAY)
+
+
+class LabelPanel:
+    def __init__(self, meshObj, existing=None, cornerAngle=35.0):
+        import HoleFill
+        from HoleFill.labeled import boundaryLoop, cornerSplits
+        self.obj = meshObj
+        self.existing = existing
+        self.loop, self.points = boundaryLoop(meshObj.Mesh)  # raises for a closed or empty mesh
+        n = len(self.loop)
+        self.edgeLength = sum(self._dist(self.points[k], self.points[(k + 1) % n]) for k in range(n)) / n
+        if existing is not None and list(existing.Loop) == self.loop:
+            self.splits = set(existing.Splits)
+            starts = sorted(self.splits)
+            self.labelAt = {s: l for s, l in zip(starts, existing.Labels)} if starts else {0: existing.Labels[0]}
+        else:
+            self.splits = set(cornerSplits(self.points, cornerAngle))
+            self.labelAt = {}
+        self.form = QtWidgets.QWidget()
+        self.form.setWindowTitle("Label boundary")
+        layout = QtWidgets.QVBoxLayout(self.form)
+        self.summary = QtWidgets.QLabel("%s: boundary of %d vertices." % (meshObj.Label, n))
+        self.summary.setWordWrap(True)
+        layout.addWidget(self.summary)
+        help = QtWidgets.QLabel("Click near a boundary edge to cycle its segment's label N → E → S → W → none. "
+                                "Click on a boundary vertex to split a segment there, or on a split to merge. "
+                                "Going anticlockwise around the region the labels must run S, E, N, W.")
+        help.setWordWrap(True)
+        layout.addWidget(help)
+        self.segmentList = QtWidgets.QListWidget()
+        self.segmentList.setObjectName("HoleFillLabelSegments")
+        layout.addWidget(self.segmentList)
+        row = QtWidgets.QHBoxLayout()
+        row.addWidget(QtWidgets.QLabel("Corner angle (°):"))
+        self.angle = QtWidgets.QDoubleSpinBox()
+        self.angle.setObjectName("HoleFillLabelCornerAngle")
+        self.angle.setRange(5, 175)
+        self.angle.setValue(cornerAngle)
+        row.addWidget(self.angle)
+        resplit = QtWidgets.QPushButton("Split at corners")
+        resplit.setObjectName("HoleFillLabelResplit")
+        resplit.clicked.connect(self.splitAtCorners)
+        row.addWidget(resplit)
+        layout.addLayout(row)
+        clear = QtWidgets.QPushButton("Clear labels")
+        clear.setObjectName("HoleFillLabelClear")
+        clear.clicked.connect(self.clearLabels)
+        layout.addWidget(clear)
+        self.status = QtWidgets.QLabel()
+        self.status.setObjectName("HoleFillLabelStatus")
+        self.status.setWordWrap(True)
+        layout.addWidget(self.status)
+        from pivy import coin
+        self.view = FreeCADGui.ActiveDocument.ActiveView
+        self.callback = self.view.addEventCallbackPivy(coin.SoMouseButtonEvent.getClassTypeId(), self.onMouse)
+        self.redraw()
+
+    # -- geometry ----------------------------------------------------------------------------
+    @staticmethod
+    def _dist(a, b):
+        return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
+
+    def _segmentDistance(self, p, a, b):
+        d = [y - x for x, y in zip(a, b)]
+        dd = sum(x * x for x in d)
+        t = 0.0 if dd == 0 else max(0.0, min(1.0, sum((pp - x) * y for pp, x, y in zip(p, a, d)) / dd))
+        return self._dist(p, [x + t * y for x, y in zip(a, d)])
+
+    def segments(self):
+        """[(start position, [loop positions])], in loop order."""
+        from HoleFill.labeled import segmentsOf
+        segs = segmentsOf(len(self.loop), self.splits)
+        starts = sorted(self.splits) or [0]
+        return list(zip(starts, segs))
+
+    def labels(self):
+        return [self.labelAt.get(s, "-") for s, _ in self.segments()]
+
+    # -- clicks ------------------------------------------------------------------------------
+    def onMouse(self, cb):
+        from pivy import coin
+        ev = cb.getEvent()
+        if ev.getButton() != coin.SoMouseButtonEvent.BUTTON1 or ev.getState() != coin.SoButtonEvent.DOWN:
+            return
+        pos = ev.getPosition().getValue()
+        info = self.view.getObjectInfo((int(pos[0]), int(pos[1])))
+        if not info or info.get("Object") != self.obj.Name:
+            return
+        p = self.obj.Placement.inverse().multVec(FreeCAD.Vector(info["x"], info["y"], info["z"]))
+        QtCore.QTimer.singleShot(0, lambda: self.clickAt((p.x, p.y, p.z)))
+
+    def clickAt(self, p):
+        """A click at model point p (on the mesh): a vertex click splits or merges, an edge click
+        cycles the label; clicks farther than two edge lengths from the boundary are ignored."""
+        n = len(self.loop)
+        k = min(range(n), key=lambda i: self._dist(p, self.points[i]))
+        if self._dist(p, self.points[k]) < 0.2 * self.edgeLength:
+            self.toggleSplit(k)
+            return
+        e = min(range(n), key=lambda i: self._segmentDistance(p, self.points[i], self.points[(i + 1) % n]))
+        if self._segmentDistance(p, self.points[e], self.points[(e + 1) % n]) > 2 * self.edgeLength:
+            self.status.setText("That click was not near the boundary.")
+            return
+        self.cycleEdge(e)
+
+    def segmentOfEdge(self, e):
+        for start, seg in self.segments():
+            if e in seg[:-1]:
+                return start
+        return None
+
+    def cycleEdge(self, e):
+        start = self.segmentOfEdge(e)
+        current = self.labelAt.get(start, "-")
+        self.labelAt[start] = CYCLE[(CYCLE.index(current) + 1) % len(CYCLE)]
+        self.redraw()
+
+    def toggleSplit(self, k):
+        if k in self.splits:
+            self.splits.discard(k)
+            self.labelAt.pop(k, None)
+        else:
+            inherited = self.labelAt.get(self.segmentOfEdge(k), "-")
+            self.splits.add(k)
+            self.labelAt[k] = inherited
+        self.redraw()
+
+    def splitAtCorners(self):
+        from HoleFill.labeled import cornerSplits
+        self.splits = set(cornerSplits(self.points, self.angle.value()))
+        self.labelAt = {}
+        self.redraw()
+
+    def clearLabels(self):
+        self.labelAt = {}
+        self.redraw()
+
+    # -- drawing -----------------------------------------------------------------------------
+    def redraw(self):
+        from pivy import coin
+        from HoleFill.labeled import LABEL_COLORS
+        remove_overlay()
+        root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)
+        depth = coin.SoDepthBuffer()
+        depth.test = False  # boundary, letters and splits stay visible over the mesh
+        root.addChild(depth)
+        self.segmentList.clear()
+        for i, ((start, seg), label) in enumerate(zip(self.segments(), self.labels())):
+            self.segmentList.addItem("%d: %s, %d edges from boundary vertex %d" % (
+                i + 1, {"-": "unlabeled"}.get(label, label), len(seg) - 1, self.loop[start]))
+            sep = coin.SoSeparator()
+            sep.setName("%s_segment" % OVERLAY)
+            col = coin.SoBaseColor()
+            col.rgb.setValue(*LABEL_COLORS.get(label, LABEL_COLORS["-"]))
+            style = coin.SoDrawStyle()
+            style.lineWidth = 6 if label != "-" else 3
+            coords = coin.SoCoordinate3()
+            coords.point.setValues(0, len(seg), [list(self.points[k]) for k in seg])
+            line = coin.SoLineSet()
+            line.numVertices.setValue(len(seg))
+            for nd in (col, style, coords, line):
+                sep.addChild(nd)
+            if label != "-":
+                mid = self.points[seg[len(seg) // 2]]
+                tr = coin.SoTranslation()
+                tr.translation.setValue(*mid)
+                font = coin.SoFont()
+                font.size = 24
+                text = coin.SoText2()
+                text.string = label
+                for nd in (tr, font, text):
+                    sep.addChild(nd)
+            root.addChild(sep)
+        if self.splits:
+            sep = coin.SoSeparator()
+            col = coin.SoBaseColor()
+            col.rgb.setValue(0, 0, 0)
+            style = coin.SoDrawStyle()
+            style.pointSize = 9
+            coords = coin.SoCoordinate3()
+            coords.point.setValues(0, len(self.splits), [list(self.points[k]) for k in sorted(self.splits)])
+            for nd in (col, style, coords, coin.SoPointSet()):
+                sep.addChild(nd)
+            root.addChild(sep)
+        scene_overlay.show(root)
+        labeled = sum(1 for l in self.labels() if l != "-")
+        self.status.setText("%d segments, %d labeled. OK stores the labels; then use Fit labeled surface." % (len(self.segments()), labeled))
+
+    # -- dialog ------------------------------------------------------------------------------
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+
+    def _close(self):
+        from pivy import coin
+        self.view.removeEventCallbackPivy(coin.SoMouseButtonEvent.getClassTypeId(), self.callback)
+        remove_overlay()
+        FreeCADGui.Control.closeDialog()
+
+    def accept(self):
+        import HoleFill
+        labels = self.labels()
+        if sum(1 for l in labels if l != "-") < 2:
+            self.status.setText("Label at least two segments (a fit needs two sides of its four-sided domain).")
+            return False
+        try:
+            if self.existing is not None:
+                doc = self.existing.Document
+                doc.openTransaction("Label boundary")
+                self.existing.Loop = self.loop
+                self.existing.Splits = sorted(self.splits)
+                self.existing.Labels = labels
+                doc.recompute()
+                doc.commitTransaction()
+                obj = self.existing
+            else:
+                obj = HoleFill.makeBoundaryLabels(self.obj, splits=sorted(self.splits), labels=labels)
+        except Exception as e:
+            self.status.setText("Failed: %s" % e)
+            FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
+            return False
+        FreeCAD.Console.PrintMessage("HoleFill: %s labels %s: %s\n" % (obj.Label, self.obj.Label, " ".join(l for l in labels)))
+        self._close()
+        return True
+
+    def reject(self):
+        self._close()
+        return True
