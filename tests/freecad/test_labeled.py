@@ -57,4 +57,51 @@ def test_bad_labels_give_clear_errors():
     fcharness.expect_error(lambda: HoleFill.fitLabeled(Mesh.Mesh(), labels), "empty")
 
 
+def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
+    m, _ = cut_region()
+    doc = FreeCAD.newDocument("LabeledObjects")
+    doc.UndoMode = 1
+    region = doc.addObject("Mesh::Feature", "Region")
+    region.Mesh = m
+    doc.recompute()
+    loop, points = HoleFill.boundaryLoop(region.Mesh)
+    splits = HoleFill.cornerSplits(points)
+    assert len(splits) == 6, splits  # the L's six corners
+    lab = HoleFill.makeBoundaryLabels(region)
+    assert list(lab.Labels) == ["-"] * 6 and len(lab.Shape.Wires) == 6
+    # Label the four outer sides by where their middles are.
+    names = []
+    for wire in lab.Shape.Wires:
+        c = wire.CenterOfMass
+        names.append("S" if c.y < 0.1 else "W" if c.x < 0.1 else "N" if c.y > 2.9 else "E" if c.x > 5.9 else "-")
+    doc.openTransaction("label")
+    lab.Labels = names
+    doc.commitTransaction()
+    doc.recompute()
+    assert sorted(n for n in names if n != "-") == ["E", "N", "S", "W"], names
+    fit = HoleFill.makeLabeledFit(lab, controlPoints=(10, 8))
+    import json
+    rep = json.loads(fit.Report)
+    assert fit.Shape.isValid() and rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3, rep
+    assert fit.Untrimmed.Area > fit.Shape.Area
+    # A label change recomputes the fit; G1 and no extension are options of the same object.
+    before = fit.Report
+    lab.Labels = ["-" if n == "W" else n for n in names]
+    doc.recompute()
+    assert fit.Report != before and fit.Shape.isValid()
+    fit.Extension = "none"
+    doc.recompute()
+    assert json.loads(fit.Report)["extended_vertices"] == 0
+    # Bad input: a closed mesh, a labels object with a bad label (nothing added, error said).
+    closed = doc.addObject("Mesh::Feature", "Closed")
+    closed.Mesh = Mesh.createSphere(1.0, 16)
+    doc.recompute()
+    count = len(doc.Objects)
+    fcharness.expect_error(lambda: HoleFill.makeBoundaryLabels(closed), "no open boundary")
+    fcharness.expect_error(lambda: HoleFill.makeBoundaryLabels(region, labels=["Q"] * 6), "not N, E, S, W")
+    fcharness.expect_error(lambda: HoleFill.makeLabeledFit(region), "BoundaryLabels")
+    assert len(doc.Objects) == count, [o.Name for o in doc.Objects]
+    FreeCAD.closeDocument(doc.Name)
+
+
 fcharness.run(globals())
