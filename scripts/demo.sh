@@ -3,7 +3,9 @@
 # workbench, fill the bundled sample holes headless with freecadcmd, and write to demo-out/:
 # the filled models (.FCStd, .step), a continuity report per hole (.json + the printed
 # table) and a picture of each result (.png, rendered by FreeCAD under Xvfb); and G² G-NURBS
-# surfaces over the bundled quad cages in demo-out/gnurbs/ (.step, .faces.json, .json, zebra .png).
+# surfaces over the bundled quad cages in demo-out/gnurbs/ (.step, .faces.json, .json, zebra .png);
+# a labeled fit of the bundled torus region in demo-out/labeled/ (with and without extension:
+# trimmed .step, untrimmed .brep, .json report, mean-curvature .png of the untrimmed surface).
 set -euo pipefail
 . "$(dirname "$0")/prepare.sh"
 ./scripts/install.sh
@@ -30,6 +32,17 @@ cages=$(mktemp -d)
   "$build/App/holefill" render "$out/gnurbs/$name.step" --mode zebra --out "$out/gnurbs/$name.png" --size 800x600 >/dev/null
   /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); c=r["continuity"]; print("[demo] G-NURBS %-18s %3d faces, EPs %s: spokes G1 %.1e rad G2 %.1e, %.2f s" % (sys.argv[2], r["brep"]["faces"], r["extraordinary_points"], c["g1_spokes"], c["g2_spokes"], r["seconds"]))' "$out/gnurbs/$name.json" "$name"
 done
-cp "$cages"/cage_*.obj "$out/gnurbs/" && rm -rf "$cages"
+cp "$cages"/cage_*.obj "$out/gnurbs/"
+# Labeled fitting of the bundled L-shaped torus region (labels on its four straight sides).
+mkdir -p "$out/labeled"
+cp "$cages"/labeled_region.obj "$cages"/labeled_region.labels.json "$out/labeled/"
+for ext in G2 none; do
+  "$build/App/holefill" fit "$out/labeled/labeled_region.obj" --labels "$out/labeled/labeled_region.labels.json" --ctrl 24x8 \
+    --extension $ext --out "$out/labeled/fit_$ext.step" --untrimmed-out "$out/labeled/untrimmed_$ext.brep" --json >"$out/labeled/fit_$ext.json"
+  "$build/App/holefill" render "$out/labeled/untrimmed_$ext.brep" --mode curvature --quantity mean --view top \
+    --out "$out/labeled/untrimmed_$ext.png" --size 800x600 >/dev/null
+  /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print("[demo] labeled fit, extension %-4s data max %.1e, %d weak control points, log10 condition %.1f, %d extension vertices, %.2f s" % (sys.argv[2], r["data_max"], r["weak_control_points"], r["log10_condition"], r["extended_vertices"], r["seconds"]))' "$out/labeled/fit_$ext.json" "$ext"
+done
+rm -rf "$cages"
 echo "[demo] results in $out:"
 ls -1 "$out"

@@ -65,9 +65,11 @@ const char* kUsage =
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension G1|G2|none]\n"
-    "                [--margin M] [--untrimmed-out S.brep] [--json]   labeled fitting of a trimmed mesh region; LABELS.json:\n"
+    "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--untrimmed-out S.brep] [--json]\n"
+    "                labeled fitting of a trimmed mesh region; LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
-    "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages)\n"
+    "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
+    "                labeled_region.obj with its labeled_region.labels.json)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
     "  holefill eval uvtran [--weights W] [--samples N] [--split test|validation]\n"
@@ -396,6 +398,14 @@ int cmdFit(const Args& a) {
   else if (ext == "none") o.extend = false;
   else throw Error("--extension must be G1, G2 or none, got '" + ext + "'");
   if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
+  const auto weight = [&](const char* flag, double& into) {
+    if (!a.has(flag)) return;
+    into = number(a.get(flag), flag);
+    if (!(into >= 0)) throw Error(std::string(flag) + " must be zero or positive");
+  };
+  weight("--fairness", o.extension.fairness);
+  weight("--smoothing", o.fit.smoothing);
+  weight("--frame-placement", o.parameterization.framePlacement);
   const TriangleMesh region = readMesh(a.input);
   const std::vector<LabeledSegment> labels = parseLabelsJson(readFileBytes(a.get("--labels"), 1 << 26), a.get("--labels"));
   const LabeledFitResult r = fitLabeled(region, labels, o);
@@ -425,6 +435,11 @@ int cmdSamples(const Args& a) {
   const std::string mesh = a.input + "/scan_with_holes.obj";
   writeMesh(samples::scanWithHoles(), mesh);
   std::printf("%s\n", mesh.c_str());
+  std::string labels;
+  const TriangleMesh region = samples::labeledRegion(&labels);
+  writeMesh(region, a.input + "/labeled_region.obj");
+  writeFileAtomically(a.input + "/labeled_region.labels.json", labels + "\n");
+  std::printf("%s/labeled_region.obj\n%s/labeled_region.labels.json\n", a.input.c_str(), a.input.c_str());
   for (const auto& n : cages::sampleCageNames()) {
     const std::string path = a.input + "/" + n + ".obj";
     writeFileAtomically(path, formatCageObj(cages::sampleCage(n)));

@@ -322,7 +322,8 @@ LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const st
       for (int c = 0; c < 2; ++c) uv(v, c) = col[v][c] >= 0 ? z[col[v][c]] : s * target[at[v]][c];
     energy = (A * z - b).head(arapRows).squaredNorm() / reference;
     if (flips(uv) == 0) good = uv, goodScale = s, out.arapEnergy = energy;
-    else if (startFlips == 0) break;  // keep the last map without folds
+    // A fold in an early round often opens again as the rotations settle: keep going, and keep
+    // the last map without folds.
   }
   out.uv = good;
   out.flippedTriangles = flips(good);

@@ -92,6 +92,51 @@ TriangleMesh scanWithHoles() {
   }).mesh;
 }
 
+TriangleMesh labeledRegion(std::string* labelsJson) {
+  const int nx = 40, ny = 28, cutX = 28, cutY = 18;  // cells; the corner i >= cutX, j >= cutY is cut away
+  const double R = 60, r = 25, spanU = 100 * M_PI / 180, spanV = 70 * M_PI / 180;
+  std::map<std::pair<int, int>, int> id;
+  std::vector<Eigen::Vector3d> p;
+  std::vector<Eigen::Vector3i> t;
+  const auto inside = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny && !(i >= cutX && j >= cutY); };
+  const auto vertex = [&](int i, int j) {
+    const auto it = id.find({i, j});
+    if (it != id.end()) return it->second;
+    // Jitter interior grid points by a deterministic pattern (no two rows alike), not boundary ones.
+    const bool boundary = !(inside(i - 1, j - 1) && inside(i, j - 1) && inside(i - 1, j) && inside(i, j));
+    const double du = boundary ? 0 : 0.15 * std::sin(12.9898 * i + 78.233 * j), dv = boundary ? 0 : 0.15 * std::cos(39.3468 * i + 11.135 * j);
+    const double a = (i + du) / nx * spanU - spanU / 2, b = (j + dv) / ny * spanV - spanV / 2;
+    p.emplace_back((R + r * std::cos(b)) * std::sin(a), r * std::sin(b), (R + r * std::cos(b)) * std::cos(a) - R - r);
+    return id[{i, j}] = static_cast<int>(p.size()) - 1;
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (!inside(i, j)) continue;
+      const int a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+      if ((i + j) % 2) t.emplace_back(a, b, c), t.emplace_back(a, c, d);
+      else t.emplace_back(a, b, d), t.emplace_back(b, c, d);
+    }
+  if (labelsJson) {
+    std::string s = "{\"segments\": [";
+    const auto segment = [&](const char* label, std::vector<std::pair<int, int>> ij, bool last) {
+      s += std::string("{\"label\": \"") + label + "\", \"vertices\": [";
+      for (size_t k = 0; k < ij.size(); ++k) s += (k ? ", " : "") + std::to_string(id.at(ij[k]));
+      s += last ? "]}" : "]}, ";
+    };
+    std::vector<std::pair<int, int>> S, E, N, W;
+    for (int i = 0; i <= nx; ++i) S.emplace_back(i, 0);
+    for (int j = 0; j <= cutY; ++j) E.emplace_back(nx, j);
+    for (int i = cutX; i >= 0; --i) N.emplace_back(i, ny);
+    for (int j = ny; j >= 0; --j) W.emplace_back(0, j);
+    segment("S", S, false);
+    segment("E", E, false);
+    segment("N", N, false);
+    segment("W", W, true);
+    *labelsJson = s + "]}";
+  }
+  return fromLists(p, t);
+}
+
 CutResult cutHole(const TriangleMesh& mesh, const std::function<bool(const Eigen::Vector3d&)>& inside) {
   std::vector<Eigen::Vector3i> kept, removed;
   for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include "mesh/triangle_mesh.h"
 
@@ -21,6 +22,11 @@ TriangleMesh tube(int segments, int rings, double radius, double height, double 
 // The bundled demo mesh (Resources/samples/scan_with_holes.obj): a sphere of radius 25 (a
 // level-4 icosphere, 2562 vertices) with three holes of different sizes, one of them elongated.
 TriangleMesh scanWithHoles();
+
+// The bundled labeled-fitting demo region: a patch of a torus (radii 60 and 25, 100° × 70°)
+// with a rectangular corner cut away (an L), 40 × 28 cells, jittered inside so the triangles
+// are irregular; `labelsJson` receives its four labeled sides ({"segments": [...]}, 0-based).
+TriangleMesh labeledRegion(std::string* labelsJson = nullptr);
 
 struct CutResult {
   TriangleMesh mesh;                     // what is left, unused vertices removed
