@@ -343,8 +343,77 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       if (solved) break;
     }
     if (!solved) throw Error("the polyharmonic extension's system is singular");
-    const Eigen::MatrixX3d x = solver.solve(rhs);
+    Eigen::MatrixX3d x = solver.solve(rhs);
     if (!x.allFinite()) throw Error("the polyharmonic extension failed");
+    if (o.meshFairness > 0) {
+      // The paper's mesh fairness: the ARAP distortions D_t = J_t − R_t (J_t the triangle's uv → 3D
+      // Jacobian, R_t the nearest orthonormal frame, from the extension just solved) should vary
+      // little between neighbouring triangles; Σ area-weighted |D_t − D_t'|² over pairs sharing
+      // an edge, at least one of them touching an unknown, solved once more with the rest.
+      const auto column = [&](int v) { return v >= nv ? v - nv : (ringIndex[v] >= 0 ? nNew + ringIndex[v] : -1); };
+      Eigen::MatrixX3d current = padded.vertices;
+      for (int v = 0; v < N; ++v)
+        if (column(v) >= 0) current.row(v) = x.row(column(v));
+      const Eigen::Index T = padded.triangles.rows();
+      std::vector<Eigen::Matrix<double, 2, 3>> grad(T);  // J_t = X_t · grad_t: rows u, v; one column per corner
+      std::vector<Eigen::Matrix<double, 3, 2>> frame(T);
+      std::vector<double> triArea(T);
+      for (Eigen::Index t = 0; t < T; ++t) {
+        const Eigen::Vector3i f = padded.triangles.row(t).transpose();
+        Eigen::Matrix2d E;
+        E.col(0) = (puv.row(f[1]) - puv.row(f[0])).transpose();
+        E.col(1) = (puv.row(f[2]) - puv.row(f[0])).transpose();
+        triArea[t] = 0.5 * std::abs(E.determinant());
+        const Eigen::Matrix2d Ei = E.inverse();  // rows: d(edge coefficients)/d(u, v)
+        // J = [x1 − x0, x2 − x0] · Ei, so J(:, j) = Σ_corner x_corner · g(j, corner)
+        grad[t] << -Ei(0, 0) - Ei(1, 0), Ei(0, 0), Ei(1, 0), -Ei(0, 1) - Ei(1, 1), Ei(0, 1), Ei(1, 1);
+        Eigen::Matrix<double, 3, 2> J = Eigen::Matrix<double, 3, 2>::Zero();
+        for (int c = 0; c < 3; ++c) J += current.row(f[c]).transpose() * grad[t].col(c).transpose();
+        const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+        frame[t] = svd.matrixU().leftCols<2>() * svd.matrixV().transpose();
+      }
+      std::map<std::pair<int, int>, Eigen::Index> firstAt;
+      std::vector<Eigen::Triplet<double>> Et;
+      std::vector<Eigen::RowVector3d> Erhs;
+      int row = 0;
+      for (Eigen::Index t = 0; t < T; ++t)
+        for (int c = 0; c < 3; ++c) {
+          int a = padded.triangles(t, c), b = padded.triangles(t, (c + 1) % 3);
+          if (a > b) std::swap(a, b);
+          const auto [it, fresh] = firstAt.emplace(std::make_pair(a, b), t);
+          if (fresh) continue;
+          const Eigen::Index t2 = it->second;
+          bool touches = false;
+          for (const Eigen::Index q : {t, t2})
+            for (int k = 0; k < 3; ++k) touches = touches || column(padded.triangles(q, k)) >= 0;
+          if (!touches) continue;
+          const double w = std::sqrt(0.5 * (triArea[t] + triArea[t2]));
+          for (int j = 0; j < 2; ++j, ++row) {
+            Eigen::RowVector3d r = -w * (frame[t].col(j) - frame[t2].col(j)).transpose();
+            for (const auto& [q, sign] : {std::pair<Eigen::Index, double>{t, 1.0}, {t2, -1.0}})
+              for (int k = 0; k < 3; ++k) {
+                const int v = padded.triangles(q, k);
+                const double g = sign * w * grad[q](j, k);
+                if (column(v) >= 0) Et.emplace_back(row, column(v), g);
+                else r += g * padded.vertices.row(v);  // a known vertex moves to the right side
+              }
+            Erhs.push_back(-r);
+          }
+        }
+      Eigen::SparseMatrix<double> Em(row, nU);
+      Em.setFromTriplets(Et.begin(), Et.end());
+      Eigen::MatrixX3d eb(row, 3);
+      for (int r = 0; r < row; ++r) eb.row(r) = Erhs[r];
+      const Eigen::SparseMatrix<double> EtE = Em.transpose() * Em;
+      const double wm = o.meshFairness * scale / std::max(1e-300, EtE.diagonal().cwiseAbs().maxCoeff());
+      const Eigen::SparseMatrix<double> FtF = gridLineDifferences(o.order + 1);
+      const double fair = o.fairness * scale / std::max(1e-300, FtF.diagonal().cwiseAbs().maxCoeff());
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> again(PtP + fair * FtF + hold * fidelity + wm * EtE);
+      if (again.info() == Eigen::Success) {
+        const Eigen::MatrixX3d y = again.solve(-(Pn.transpose() * (P * known)) + hold * fidelityRhs + wm * (Em.transpose() * eb));
+        if (y.allFinite()) x = y;
+      }
+    }
     padded.vertices.bottomRows(nNew) = x.topRows(nNew);
   }
 

@@ -296,7 +296,6 @@ LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const st
     return n;
   };
   const int startFlips = flips(uv);
-  if (startFlips > 0) out.warnings.push_back(std::to_string(startFlips) + " triangles are folded already in Tutte's start");
   double energy = 0;
   for (int it = 0; it < o.iterations; ++it) {
     // Local: the rotation nearest to each triangle's current map.
@@ -327,7 +326,13 @@ LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const st
   }
   out.uv = good;
   out.flippedTriangles = flips(good);
-  if (startFlips == 0 && flips(uv) > 0) out.warnings.push_back("ARAP folded triangles; the last unfolded map is kept");
+  // Tutte's start may hold flat triangles (three boundary vertices on one side of the rectangle),
+  // which ARAP opens; only folds left in the returned map are worth a warning.
+  if (out.flippedTriangles > 0)
+    out.warnings.push_back(std::to_string(out.flippedTriangles) + " triangles stay folded (" + std::to_string(startFlips) +
+                           " in Tutte's start)");
+  else if (flips(uv) > 0)
+    out.warnings.push_back("ARAP folded triangles; the last unfolded map is kept");
   const double kept = goodScale;
   out.width = kept * W;
   out.height = kept * H;

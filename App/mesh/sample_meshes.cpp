@@ -93,8 +93,8 @@ TriangleMesh scanWithHoles() {
 }
 
 TriangleMesh labeledRegion(std::string* labelsJson) {
-  const int nx = 40, ny = 28, cutX = 28, cutY = 18;  // cells; the corner i >= cutX, j >= cutY is cut away
-  const double R = 60, r = 25, spanU = 100 * M_PI / 180, spanV = 70 * M_PI / 180;
+  const int nx = 42, ny = 15, cutX = 30, cutY = 10;  // cells; the corner i >= cutX, j >= cutY is cut away
+  const double R = 60, r = 25, spanU = 60 * M_PI / 180, spanV = 70 * M_PI / 180;  // cells about 2 × 2
   std::map<std::pair<int, int>, int> id;
   std::vector<Eigen::Vector3d> p;
   std::vector<Eigen::Vector3i> t;

@@ -23,9 +23,9 @@ TriangleMesh tube(int segments, int rings, double radius, double height, double 
 // level-4 icosphere, 2562 vertices) with three holes of different sizes, one of them elongated.
 TriangleMesh scanWithHoles();
 
-// The bundled labeled-fitting demo region: a patch of a torus (radii 60 and 25, 100° × 70°)
-// with a rectangular corner cut away (an L), 40 × 28 cells, jittered inside so the triangles
-// are irregular; `labelsJson` receives its four labeled sides ({"segments": [...]}, 0-based).
+// The bundled labeled-fitting demo region: a patch of a torus (radii 60 and 25, 60° × 70°)
+// with a rectangular corner cut away (an L), 42 × 15 cells of about 2 × 2, jittered inside so
+// the triangles are irregular; `labelsJson` receives its four labeled sides ({"segments": [...]}, 0-based).
 TriangleMesh labeledRegion(std::string* labelsJson = nullptr);
 
 struct CutResult {

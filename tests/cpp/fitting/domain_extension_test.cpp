@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "fitting/domain_extension.h"
 #include "geometry/error.h"
@@ -77,4 +78,53 @@ TEST(DomainExtension, RefusesMismatchedOrBadInput) {
   o.order = 4;
   EXPECT_THROW(extendToRectangle(region, uv, 4, 2, o), Error);
   EXPECT_THROW(extendToRectangle(region, uv, 0, 2), Error);
+}
+
+namespace {
+
+// Σ over new triangles' shared edges of |D_t − D_t'|², D = J − R (J the uv → 3D Jacobian, R its
+// nearest orthonormal frame): what the paper's mesh fairness minimizes.
+double distortionVariation(const DomainExtension& e) {
+  const Eigen::Index T = e.mesh.triangles.rows();
+  std::vector<Eigen::Matrix<double, 3, 2>> D(T);
+  for (Eigen::Index t = 0; t < T; ++t) {
+    const Eigen::Vector3i f = e.mesh.triangles.row(t).transpose();
+    Eigen::Matrix2d E;
+    E.col(0) = (e.uv.row(f[1]) - e.uv.row(f[0])).transpose();
+    E.col(1) = (e.uv.row(f[2]) - e.uv.row(f[0])).transpose();
+    Eigen::Matrix<double, 3, 2> X;
+    X.col(0) = (e.mesh.vertices.row(f[1]) - e.mesh.vertices.row(f[0])).transpose();
+    X.col(1) = (e.mesh.vertices.row(f[2]) - e.mesh.vertices.row(f[0])).transpose();
+    const Eigen::Matrix<double, 3, 2> J = X * E.inverse();
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    D[t] = J - svd.matrixU().leftCols<2>() * svd.matrixV().transpose();
+  }
+  std::map<std::pair<int, int>, Eigen::Index> first;
+  double sum = 0;
+  for (Eigen::Index t = e.regionTriangles; t < T; ++t)
+    for (int c = 0; c < 3; ++c) {
+      int a = e.mesh.triangles(t, c), b = e.mesh.triangles(t, (c + 1) % 3);
+      if (a > b) std::swap(a, b);
+      const auto [it, fresh] = first.emplace(std::make_pair(a, b), t);
+      if (!fresh) sum += (D[t] - D[it->second]).squaredNorm();
+    }
+  return sum;
+}
+
+}  // namespace
+
+TEST(DomainExtension, MeshFairnessEvensOutTheDistortionOfNeighbouringTriangles) {
+  // The paper's E_Mesh, an option (default off: on the bundled torus region it did not lower the
+  // data error, 3.9e-4 → 4.2e-4 at 1e-2, and it pulls a bicubic off its exact continuation).
+  // Measured here: 2.7e-2 → 1.4e-2.
+  Eigen::MatrixX2d uv;
+  const TriangleMesh region = ellipseRegion([](double x, double y) { return 0.1 * (x - 2) * (x - 2) - 0.15 * (y - 1) * (y - 1) + 0.05 * x * y; }, uv);
+  DomainExtensionOptions o;
+  const double without = distortionVariation(extendToRectangle(region, uv, 4, 2, o));
+  o.meshFairness = 1e-2;
+  const DomainExtension e = extendToRectangle(region, uv, 4, 2, o);
+  const double with = distortionVariation(e);
+  std::printf("distortion variation over the extension: %.3e without mesh fairness, %.3e with 1e-2\n", without, with);
+  EXPECT_TRUE(e.mesh.vertices.allFinite());
+  EXPECT_LT(with, 0.9 * without);
 }
