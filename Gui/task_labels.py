@@ -39,7 +39,6 @@ def remove_overlay():
 
 class LabelPanel:
     def __init__(self, meshObj, existing=None, cornerAngle=35.0):
-        import HoleFill
         from HoleFill.labeled import boundaryLoop, cornerSplits
         self.obj = meshObj
         self.existing = existing

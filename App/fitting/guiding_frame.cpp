@@ -135,25 +135,24 @@ GuidingFrame fitGuidingFrame(const LabeledSides& sides, const GuidingFrameOption
   if (labeledSides < 2) throw Error("label at least two sides (N, E, S or W) to fit a guiding frame");
   const double diagonal = std::max(box.diagonal().norm(), 1e-300);
 
-  // Missing corners (two labeled sides whose labels stop short of their common corner by more
-  // than three point spacings): where
-  // the sides' own cubic fits, extrapolated, come closest, if they come within 5% of the
-  // diagonal (else, as for nearly parallel sides, the frame's least squares place it). Such a
-  // corner is then held while the frame is fitted: left to the shared least squares, the data
-  // barely determine it (a labeled stretch met within tolerance can be continued in many ways)
-  // and it settled 0.47 off on a cylinder with a cut corner.
+  // Missing corners (two labeled sides whose labels stop more than three point spacings short of
+  // their common corner): where the sides' own cubic fits, continued, come closest, if they come
+  // within 5% of the diagonal (else, as for nearly parallel sides, the frame's least squares place
+  // it). Such a corner is held while the frame is fitted: left to the shared least squares, the
+  // data barely determine it (a labeled stretch met within tolerance can be continued in many
+  // ways) and it settled 0.47 off on a cylinder with a cut corner. Ends a few spacings apart are
+  // a corner the data already determine.
+  const auto spacing = [&](int k) {
+    const auto& p = sides.points[k];
+    double len = 0;
+    for (size_t q = 1; q < p.size(); ++q) len += (p[q] - p[q - 1]).norm();
+    return len / static_cast<double>(p.size() - 1);
+  };
   std::array<bool, 4> heldEnd{};
   std::array<Eigen::Vector3d, 4> heldCorner;
   for (int i = 0; i < 4; ++i) {
     const int j = (i + 1) % 4;
     if (!f.labeled[i] || !f.labeled[j]) continue;
-    // Only a real gap: ends a few point spacings apart are a corner the data already determine.
-    const auto spacing = [&](int k) {
-      const auto& p = sides.points[k];
-      double len = 0;
-      for (size_t q = 1; q < p.size(); ++q) len += (p[q] - p[q - 1]).norm();
-      return len / static_cast<double>(p.size() - 1);
-    };
     if ((sides.points[i].back() - sides.points[j].front()).norm() <= 3 * std::max(spacing(i), spacing(j))) continue;
     Eigen::Vector3d corner;
     if (extrapolatedCorner(sides.points[i], sides.points[j], 0.05 * diagonal, corner)) heldEnd[i] = true, heldCorner[i] = corner;
@@ -165,11 +164,10 @@ GuidingFrame fitGuidingFrame(const LabeledSides& sides, const GuidingFrameOption
     const auto& pts = sides.points[i];
     std::vector<double> t(pts.size(), 0.0);
     for (size_t k = 1; k < pts.size(); ++k) t[k] = t[k - 1] + (pts[k] - pts[k - 1]).norm();
-    double total = t.back();
-    if (heldEnd[i]) total += (heldCorner[i] - pts.back()).norm();
-    double offset = 0;
-    if (heldEnd[(i + 3) % 4]) offset = (heldCorner[(i + 3) % 4] - pts.front()).norm(), total += offset;
-    for (double& x : t) x = total > 0 ? (x + offset) / total : 0.0;
+    double length = t.back(), offset = 0;
+    if (heldEnd[i]) length += (heldCorner[i] - pts.back()).norm();
+    if (heldEnd[(i + 3) % 4]) offset = (heldCorner[(i + 3) % 4] - pts.front()).norm(), length += offset;
+    for (double& x : t) x = length > 0 ? (x + offset) / length : 0.0;
     f.parameters[i] = t;
   }
 

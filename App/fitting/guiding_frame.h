@@ -3,7 +3,8 @@
 // corners, fitted to the labeled boundary points by least squares with the bending energy
 // ∫|c''|² as regulariser (eq. (1)-(2)). Parameters come from projecting the points on the
 // current frame; the fit starts linear (a quadrilateral) and raises the degree while the points
-// are not met within the tolerance. With three labeled sides the frame is three curves; with
+// are not met within the tolerance. A corner the labels stop well short of is taken where the
+// two sides' own cubic fits, continued, meet, and held there. With three labeled sides the frame is three curves; with
 // two, two (sharing a corner when they are adjacent). The frame sets the corners and
 // proportions the labeled parameterization maps to the domain rectangle.
 #pragma once

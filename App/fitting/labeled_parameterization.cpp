@@ -217,7 +217,7 @@ LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const st
     for (int v = 0; v < nv; ++v)
       if (onRim[v]) T.emplace_back(v, v, 1.0), rhs.row(v) = uv.row(v);
     for (const auto& e : topo.edges())
-      for (const auto [a, b] : {std::pair<int, int>{e.a, e.b}, {e.b, e.a}})
+      for (const auto& [a, b] : {std::pair<int, int>{e.a, e.b}, {e.b, e.a}})
         if (!onRim[a]) T.emplace_back(a, a, 1.0), T.emplace_back(a, b, -1.0);
     Eigen::SparseMatrix<double> A(nv, nv);
     A.setFromTriplets(T.begin(), T.end());
