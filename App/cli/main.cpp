@@ -24,7 +24,9 @@
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
 #include "geometry/text_file.h"
+#include "fitting/cloud_parameterization.h"
 #include "fitting/labeled_fit.h"
+#include "geometry/flagged_cloud.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
 #include "gnurbs/gnurbs_fit.h"
@@ -68,6 +70,9 @@ const char* kUsage =
     "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
+    "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform] [--radius R] [--json]\n"
+    "                meshless parameterization of a point cloud; CLOUD.txt lines 'x y z flag u v' (flag 1: boundary point\n"
+    "                with its u v; 0: interior); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
     "                labeled_region.obj with its labeled_region.labels.json)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
@@ -425,6 +430,42 @@ int cmdFit(const Args& a) {
   return r.parameterization.flippedTriangles > 0 || !r.fit.valid ? 3 : 0;
 }
 
+// Exit 0 when written (with warnings on stderr).
+int cmdParam(const Args& a) {
+  if (a.input.empty()) throw Error("param: no point cloud given (lines x y z flag u v)");
+  if (!a.has("--out")) throw Error("param: --out UV.txt is required");
+  CloudParameterizationOptions o;
+  o.weights = cloudWeightsByName(a.get("--method", "shape"));
+  if (a.has("--radius")) o.radius = number(a.get("--radius"), "--radius");
+  const FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
+  const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, o);
+  std::ostringstream text;
+  text.precision(17);
+  for (Eigen::Index k = 0; k < p.uv.rows(); ++k) text << p.uv(k, 0) << ' ' << p.uv(k, 1) << '\n';
+  writeFileAtomically(a.get("--out"), text.str());
+  if (a.has("--json")) {
+    JsonWriter j;
+    j.beginObject()
+        .field("points", static_cast<int>(c.points.rows()))
+        .field("boundary_points", static_cast<int>(std::count(c.boundary.begin(), c.boundary.end(), true)))
+        .field("method", a.get("--method", "shape"))
+        .field("radius", p.radius)
+        .field("min_neighbours", p.minNeighbours)
+        .field("max_neighbours", p.maxNeighbours)
+        .field("fallbacks", p.fallbacks)
+        .field("seconds", p.seconds)
+        .field("warnings", p.warnings)
+        .endObject();
+    std::cout << j.str() << "\n";
+  } else {
+    std::printf("%d points (%d on the boundary), %s weights, radius %.4g (unit-cube scale), %d-%d neighbours, %.3f s; wrote %s\n",
+                static_cast<int>(c.points.rows()), static_cast<int>(std::count(c.boundary.begin(), c.boundary.end(), true)),
+                a.get("--method", "shape").c_str(), p.radius, p.minNeighbours, p.maxNeighbours, p.seconds, a.get("--out").c_str());
+  }
+  for (const auto& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return 0;
+}
+
 int cmdSamples(const Args& a) {
   if (a.input.empty()) throw Error("samples: no output folder");
   for (const auto& n : samples::names()) {
@@ -473,6 +514,7 @@ int main(int argc, char** argv) {
     if (a.verb == "mesh-holes") return cmdMeshHoles(a);
     if (a.verb == "gnurbs") return cmdGnurbs(a);
     if (a.verb == "fit") return cmdFit(a);
+    if (a.verb == "param") return cmdParam(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

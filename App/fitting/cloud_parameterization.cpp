@@ -1,0 +1,193 @@
+#include "fitting/cloud_parameterization.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <Eigen/Sparse>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "geometry/error.h"
+
+namespace holefill {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using Delaunay = CGAL::Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb>>;
+
+// Points within `r` of each point (itself excluded), by a uniform grid of cells of size r.
+std::vector<std::vector<int>> radiusNeighbours(const Eigen::MatrixX3d& p, double r) {
+  std::map<std::array<long, 3>, std::vector<int>> cells;
+  const auto cellOf = [&](Eigen::Index k) {
+    return std::array<long, 3>{static_cast<long>(std::floor(p(k, 0) / r)), static_cast<long>(std::floor(p(k, 1) / r)),
+                               static_cast<long>(std::floor(p(k, 2) / r))};
+  };
+  for (Eigen::Index k = 0; k < p.rows(); ++k) cells[cellOf(k)].push_back(static_cast<int>(k));
+  std::vector<std::vector<int>> out(p.rows());
+  for (Eigen::Index k = 0; k < p.rows(); ++k) {
+    const auto c = cellOf(k);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells.end()) continue;
+          for (int j : it->second)
+            if (j != k && (p.row(j) - p.row(k)).squaredNorm() <= r * r) out[k].push_back(j);
+        }
+  }
+  return out;
+}
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Floater's shape-preserving weights of the origin w.r.t. a star of neighbours q (anticlockwise
+// around it): for each neighbour l, the barycentric coordinates of the origin in the triangle of
+// l and the opposite ring edge that the ray from l through the origin crosses, averaged over l.
+// Empty when the origin is not inside the star.
+std::vector<double> shapePreservingWeights(const std::vector<Eigen::Vector2d>& q) {
+  const int d = static_cast<int>(q.size());
+  std::vector<double> w(d, 0.0);
+  for (int l = 0; l < d; ++l) {
+    bool found = false;
+    for (int r = 0; r < d && !found; ++r) {
+      const int s = (r + 1) % d;
+      if (r == l || s == l) continue;
+      const double area = cross2(q[r] - q[l], q[s] - q[l]);
+      if (std::abs(area) < 1e-300) continue;
+      // Barycentric coordinates of the origin in (q_l, q_r, q_s).
+      const double a = cross2(q[r], q[s]) / area, b = cross2(q[s], q[l]) / area, c = cross2(q[l], q[r]) / area;
+      if (a >= -1e-12 && b >= -1e-12 && c >= -1e-12) {
+        w[l] += a, w[r] += b, w[s] += c;
+        found = true;
+      }
+    }
+    if (!found) return {};
+  }
+  for (double& x : w) x /= d;
+  return w;
+}
+
+}  // namespace
+
+CloudWeights cloudWeightsByName(const std::string& name) {
+  if (name == "uniform") return CloudWeights::Uniform;
+  if (name == "invdist" || name == "inverse-distance") return CloudWeights::InverseDistance;
+  if (name == "shape" || name == "shape-preserving") return CloudWeights::ShapePreserving;
+  throw Error("unknown parameterization method '" + name + "': use shape, invdist or uniform");
+}
+
+CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
+                                        const CloudParameterizationOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int n = static_cast<int>(points.rows());
+  if (n < 10) throw Error("the cloud has " + std::to_string(n) + " points; parameterizing needs at least 10");
+  if (static_cast<int>(boundary.size()) != n || boundaryUV.rows() != n) throw Error("the boundary flags or parameters do not match the points in number");
+  if (!points.allFinite()) throw Error("the cloud has a non-finite coordinate");
+  const int nb = static_cast<int>(std::count(boundary.begin(), boundary.end(), true));
+  if (nb < 3) throw Error("the cloud has " + std::to_string(nb) + " boundary points with parameters; it needs at least 3 (flag 1 with u v)");
+  for (int k = 0; k < n; ++k)
+    if (boundary[k] && !boundaryUV.row(k).allFinite()) throw Error("boundary point " + std::to_string(k) + " has a non-finite parameter");
+  if (!(o.radius >= 0)) throw Error("the neighbourhood radius must be positive (or 0 for the default)");
+
+  // The unit cube: shifted to the origin and scaled by the largest extent (shape kept).
+  const Eigen::RowVector3d lo = points.colwise().minCoeff(), hi = points.colwise().maxCoeff();
+  const double extent = (hi - lo).maxCoeff();
+  if (!(extent > 0)) throw Error("all points of the cloud coincide");
+  const Eigen::MatrixX3d p = (points.rowwise() - lo) / extent;
+  CloudParameterization out;
+  out.radius = o.radius > 0 ? o.radius : 3.0 / std::sqrt(static_cast<double>(n));
+  const std::vector<std::vector<int>> ball = radiusNeighbours(p, out.radius);
+  for (int k = 0; k < n; ++k)
+    for (int j : ball[k])
+      if (j > k && (p.row(j) - p.row(k)).squaredNorm() <= 1e-24) throw Error("points " + std::to_string(k) + " and " + std::to_string(j) + " coincide: remove duplicates first");
+
+  // Rows u_i − Σ λ_ik u_k = 0 for interior points, u_j = given for boundary points.
+  std::vector<Eigen::Triplet<double>> T;
+  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(n, 2);
+  out.minNeighbours = n;
+  for (int i = 0; i < n; ++i) {
+    T.emplace_back(i, i, 1.0);
+    if (boundary[i]) {
+      rhs.row(i) = boundaryUV.row(i);
+      continue;
+    }
+    if (ball[i].empty())
+      throw Error("interior point " + std::to_string(i) + " has no neighbour within radius " + std::to_string(out.radius) +
+                  " (unit-cube scale): give a larger radius");
+    std::vector<int> nbr = ball[i];
+    std::vector<double> w;
+    if (o.weights == CloudWeights::ShapePreserving) {
+      // The ball projected on its best-fit plane, Delaunay-triangulated; i's neighbours there.
+      Eigen::RowVector3d c = p.row(i);
+      for (int j : nbr) c += p.row(j);
+      c /= static_cast<double>(nbr.size() + 1);
+      Eigen::Matrix3d C = (p.row(i) - c).transpose() * (p.row(i) - c);
+      for (int j : nbr) C += (p.row(j) - c).transpose() * (p.row(j) - c);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
+      const Eigen::Vector3d e1 = eig.eigenvectors().col(2), e2 = eig.eigenvectors().col(1);
+      Delaunay dt;
+      const auto plane = [&](int k) { return Delaunay::Point((p.row(k) - c).dot(e1.transpose()), (p.row(k) - c).dot(e2.transpose())); };
+      auto vi = dt.insert(plane(i));
+      vi->info() = i;
+      for (int j : nbr) dt.insert(plane(j))->info() = j;
+      std::vector<int> ring;
+      bool hull = false;
+      auto circ = dt.incident_vertices(vi), start = circ;
+      if (circ != nullptr) do {
+          if (dt.is_infinite(circ)) hull = true;
+          else ring.push_back(circ->info());
+        } while (++circ != start);
+      if (!hull && ring.size() >= 3) {
+        // The geodesic polar map: 3D lengths, 3D angles scaled to sum to 2π, in the ring's order.
+        const int d = static_cast<int>(ring.size());
+        std::vector<double> angle(d), len(d);
+        double total = 0;
+        for (int k = 0; k < d; ++k) {
+          const Eigen::Vector3d a = (p.row(ring[k]) - p.row(i)).transpose(), b = (p.row(ring[(k + 1) % d]) - p.row(i)).transpose();
+          angle[k] = std::atan2(a.cross(b).norm(), a.dot(b));
+          len[k] = a.norm();
+          total += angle[k];
+        }
+        std::vector<Eigen::Vector2d> q(d);
+        double phi = 0;
+        for (int k = 0; k < d; ++k) {
+          q[k] = len[k] * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+          phi += angle[k] * 2 * M_PI / total;
+        }
+        w = shapePreservingWeights(q);
+        if (!w.empty()) nbr = ring;
+      }
+      if (w.empty()) ++out.fallbacks;  // on its ball's hull: inverse distance below
+    }
+    if (w.empty()) {
+      w.resize(nbr.size());
+      for (size_t k = 0; k < nbr.size(); ++k)
+        w[k] = o.weights == CloudWeights::Uniform ? 1.0 : 1.0 / (p.row(nbr[k]) - p.row(i)).norm();
+      const double sum = std::accumulate(w.begin(), w.end(), 0.0);
+      for (double& x : w) x /= sum;
+    }
+    out.minNeighbours = std::min(out.minNeighbours, static_cast<int>(nbr.size()));
+    out.maxNeighbours = std::max(out.maxNeighbours, static_cast<int>(nbr.size()));
+    for (size_t k = 0; k < nbr.size(); ++k) T.emplace_back(i, nbr[k], -w[k]);
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(T.begin(), T.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.compute(A);
+  if (lu.info() != Eigen::Success)
+    throw Error("some interior points are not connected to the boundary within radius " + std::to_string(out.radius) + ": give a larger radius");
+  out.uv = lu.solve(rhs);
+  if (!out.uv.allFinite()) throw Error("the parameterization's system is singular: some interior points are not connected to the boundary");
+  if (out.fallbacks > 0)
+    out.warnings.push_back(std::to_string(out.fallbacks) + " points lie on the hull of their projected ball and got inverse-distance weights");
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace holefill

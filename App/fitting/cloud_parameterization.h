@@ -1,0 +1,44 @@
+// Classical meshless parameterization of a point cloud with known boundary parameters
+// (bidgcn.md sec. 3.2, after Floater & Reimers, "Meshless parameterization and surface
+// reconstruction", CAGD 18, 2001): every interior point's (u, v) is a convex combination of its
+// neighbours' — u_i = Σ λ_ik u_k — with the boundary points' parameters fixed, one sparse linear
+// system. Neighbours are the points within a radius r (default 3/√|P| after scaling the cloud
+// into the unit cube, the paper's eq. (7)); weights uniform (1/|N_i|), inverse distance, or
+// shape-preserving (Floater 1997: the Delaunay neighbours of the point in the projection of its
+// ball onto the ball's best-fit plane, weights from the geodesic polar map, which reproduce
+// planar configurations exactly). These are the baselines BIDGCN is measured against, and user
+// options in their own right.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace holefill {
+
+enum class CloudWeights { Uniform, InverseDistance, ShapePreserving };
+
+struct CloudParameterizationOptions {
+  CloudWeights weights = CloudWeights::ShapePreserving;
+  double radius = 0;  // neighbourhood radius in the unit-cube-scaled cloud; 0: 3/√|P|
+};
+
+struct CloudParameterization {
+  Eigen::MatrixX2d uv;                 // per point; boundary points keep theirs
+  double radius = 0;                   // the radius used (unit-cube scale)
+  int minNeighbours = 0, maxNeighbours = 0;  // over interior points
+  int fallbacks = 0;                   // shape-preserving: points on their ball's hull, given inverse-distance weights
+  double seconds = 0;
+  std::vector<std::string> warnings;
+};
+
+// `boundary[k]` marks points whose parameters boundaryUV.row(k) are given (other rows ignored).
+// Throws Error for fewer than 10 points, fewer than 3 boundary points, non-finite input,
+// coinciding points, an interior point without neighbours within the radius, or interior points
+// the radius graph does not connect to the boundary.
+CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
+                                        const CloudParameterizationOptions& options = {});
+
+CloudWeights cloudWeightsByName(const std::string& name);  // "uniform", "invdist", "shape"; throws Error otherwise
+
+}  // namespace holefill
