@@ -22,6 +22,7 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "fitting/cloud_parameterization.h"
 #include "fitting/labeled_fit.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
@@ -419,6 +420,31 @@ PYBIND11_MODULE(HoleFillApp, m) {
      py::arg("extension") = "G2", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
      "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
+  m.def("parameterizeCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
+                                const std::string& method, double radius) {
+    return guarded([&] {
+      CloudParameterizationOptions o;
+      o.weights = cloudWeightsByName(method);
+      o.radius = radius;
+      CloudParameterization p;
+      {
+        py::gil_scoped_release release;
+        p = parameterizeCloud(points, boundary, boundaryUV, o);
+      }
+      JsonWriter j;
+      j.beginObject()
+          .field("method", method)
+          .field("radius", p.radius)
+          .field("min_neighbours", p.minNeighbours)
+          .field("max_neighbours", p.maxNeighbours)
+          .field("fallbacks", p.fallbacks)
+          .field("seconds", p.seconds)
+          .field("warnings", p.warnings)
+          .endObject();
+      return py::make_tuple(p.uv, j.str());
+    });
+  }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("method") = "shape", py::arg("radius") = 0.0,
+     "Meshless parameterization of a point cloud with fixed boundary parameters: (uv per point, report JSON).");
   m.def("sampleCageNames", &cages::sampleCageNames);
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
         py::arg("name"), "OBJ text of a bundled sample cage.");
