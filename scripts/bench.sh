@@ -15,6 +15,9 @@
 #     freecadcmd, tests/bench/approx_surface.py) on 12 trimmed regions cut from known surfaces:
 #     data error, band deviation both ways, weak control points, condition, time; curvature
 #     pictures in bench-out/fitting. BENCH_ONLY=fitting runs part 5 alone.
+#  6. holefill_bench_cloud_params: point-cloud parameterization (shape-preserving, inverse
+#     distance, uniform) on the bidgcn paper's random biquadratic clouds: biquadratic-fit MSE,
+#     failures, time. BENCH_ONLY=cloud-params runs part 6 alone (BENCH_CLOUDS, default 100).
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -32,6 +35,17 @@ bench_fitting() {
     rm -rf "$HOME"
   )
 }
+bench_cloud_params() {
+  cmake -S "$root" -B "$build" >/dev/null
+  cmake --build "$build" --target holefill_bench_cloud_params -j "$(nproc)"
+  echo
+  "$build/tests/holefill_bench_cloud_params" "${BENCH_CLOUDS:-100}" | tee "$BENCH_OUT/bench_cloud_params.md"
+}
+if [ "${BENCH_ONLY:-}" = cloud-params ]; then  # BENCH_ONLY=cloud-params runs part 6 alone
+  bench_cloud_params
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = fitting ]; then  # BENCH_ONLY=fitting runs part 5 alone
   bench_fitting
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
@@ -75,4 +89,5 @@ cmake --build "$build" --target holefill_bench_gnurbs -j "$(nproc)"
 echo
 "$build/tests/holefill_bench_gnurbs" 4 | tee "$BENCH_OUT/bench_gnurbs.md"
 bench_fitting
+bench_cloud_params
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
