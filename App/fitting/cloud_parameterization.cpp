@@ -73,6 +73,51 @@ std::vector<double> shapePreservingWeights(const std::vector<Eigen::Vector2d>& q
   return w;
 }
 
+// The shape-preserving star of point i in its ball: the ball projected on its best-fit plane and
+// Delaunay-triangulated gives i's neighbours in order; the geodesic polar map (3D lengths, 3D
+// angles scaled to sum to 2π) places them around i, and Floater's weights follow. Empty weights
+// when i is on the hull of the projected ball.
+std::vector<int> shapePreservingStar(const Eigen::MatrixX3d& p, int i, const std::vector<int>& ball, std::vector<double>& weights) {
+  weights.clear();
+  Eigen::RowVector3d c = p.row(i);
+  for (int j : ball) c += p.row(j);
+  c /= static_cast<double>(ball.size() + 1);
+  Eigen::Matrix3d C = (p.row(i) - c).transpose() * (p.row(i) - c);
+  for (int j : ball) C += (p.row(j) - c).transpose() * (p.row(j) - c);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
+  const Eigen::Vector3d e1 = eig.eigenvectors().col(2), e2 = eig.eigenvectors().col(1);
+  Delaunay dt;
+  const auto plane = [&](int k) { return Delaunay::Point((p.row(k) - c).dot(e1.transpose()), (p.row(k) - c).dot(e2.transpose())); };
+  auto vi = dt.insert(plane(i));
+  vi->info() = i;
+  for (int j : ball) dt.insert(plane(j))->info() = j;
+  std::vector<int> ring;
+  auto circ = dt.incident_vertices(vi), start = circ;
+  if (circ == nullptr) return ring;
+  do {
+    if (dt.is_infinite(circ)) return {};
+    ring.push_back(circ->info());
+  } while (++circ != start);
+  const int d = static_cast<int>(ring.size());
+  if (d < 3) return {};
+  std::vector<double> angle(d), len(d);
+  double total = 0;
+  for (int k = 0; k < d; ++k) {
+    const Eigen::Vector3d a = (p.row(ring[k]) - p.row(i)).transpose(), b = (p.row(ring[(k + 1) % d]) - p.row(i)).transpose();
+    angle[k] = std::atan2(a.cross(b).norm(), a.dot(b));
+    len[k] = a.norm();
+    total += angle[k];
+  }
+  std::vector<Eigen::Vector2d> q(d);
+  double phi = 0;
+  for (int k = 0; k < d; ++k) {
+    q[k] = len[k] * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    phi += angle[k] * 2 * M_PI / total;
+  }
+  weights = shapePreservingWeights(q);
+  return ring;
+}
+
 }  // namespace
 
 CloudWeights cloudWeightsByName(const std::string& name) {
@@ -123,47 +168,20 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
     std::vector<int> nbr = ball[i];
     std::vector<double> w;
     if (o.weights == CloudWeights::ShapePreserving) {
-      // The ball projected on its best-fit plane, Delaunay-triangulated; i's neighbours there.
-      Eigen::RowVector3d c = p.row(i);
-      for (int j : nbr) c += p.row(j);
-      c /= static_cast<double>(nbr.size() + 1);
-      Eigen::Matrix3d C = (p.row(i) - c).transpose() * (p.row(i) - c);
-      for (int j : nbr) C += (p.row(j) - c).transpose() * (p.row(j) - c);
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
-      const Eigen::Vector3d e1 = eig.eigenvectors().col(2), e2 = eig.eigenvectors().col(1);
-      Delaunay dt;
-      const auto plane = [&](int k) { return Delaunay::Point((p.row(k) - c).dot(e1.transpose()), (p.row(k) - c).dot(e2.transpose())); };
-      auto vi = dt.insert(plane(i));
-      vi->info() = i;
-      for (int j : nbr) dt.insert(plane(j))->info() = j;
-      std::vector<int> ring;
-      bool hull = false;
-      auto circ = dt.incident_vertices(vi), start = circ;
-      if (circ != nullptr) do {
-          if (dt.is_infinite(circ)) hull = true;
-          else ring.push_back(circ->info());
-        } while (++circ != start);
-      if (!hull && ring.size() >= 3) {
-        // The geodesic polar map: 3D lengths, 3D angles scaled to sum to 2π, in the ring's order.
-        const int d = static_cast<int>(ring.size());
-        std::vector<double> angle(d), len(d);
-        double total = 0;
-        for (int k = 0; k < d; ++k) {
-          const Eigen::Vector3d a = (p.row(ring[k]) - p.row(i)).transpose(), b = (p.row(ring[(k + 1) % d]) - p.row(i)).transpose();
-          angle[k] = std::atan2(a.cross(b).norm(), a.dot(b));
-          len[k] = a.norm();
-          total += angle[k];
-        }
-        std::vector<Eigen::Vector2d> q(d);
-        double phi = 0;
-        for (int k = 0; k < d; ++k) {
-          q[k] = len[k] * Eigen::Vector2d(std::cos(phi), std::sin(phi));
-          phi += angle[k] * 2 * M_PI / total;
-        }
-        w = shapePreservingWeights(q);
-        if (!w.empty()) nbr = ring;
+      // A point on the hull of its projected ball (next to a sparse boundary) has no star around
+      // it: the ball is grown (2r, 4r) until it has one, else inverse distance.
+      std::vector<double> weights;
+      std::vector<int> ring = shapePreservingStar(p, i, nbr, weights);
+      for (double grow : {2.0, 4.0}) {
+        if (!weights.empty()) break;
+        std::vector<int> wider;
+        for (int j = 0; j < n; ++j)
+          if (j != i && (p.row(j) - p.row(i)).squaredNorm() <= grow * grow * out.radius * out.radius) wider.push_back(j);
+        ring = shapePreservingStar(p, i, wider, weights);
+        if (!weights.empty()) ++out.grown;
       }
-      if (w.empty()) ++out.fallbacks;  // on its ball's hull: inverse distance below
+      if (!weights.empty()) nbr = ring, w = weights;
+      else ++out.fallbacks;
     }
     if (w.empty()) {
       w.resize(nbr.size());
@@ -185,7 +203,7 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
   out.uv = lu.solve(rhs);
   if (!out.uv.allFinite()) throw Error("the parameterization's system is singular: some interior points are not connected to the boundary");
   if (out.fallbacks > 0)
-    out.warnings.push_back(std::to_string(out.fallbacks) + " points lie on the hull of their projected ball and got inverse-distance weights");
+    out.warnings.push_back(std::to_string(out.fallbacks) + " points lie on the hull of their projected ball even at 4 times the radius and got inverse-distance weights");
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -27,7 +27,8 @@ struct CloudParameterization {
   Eigen::MatrixX2d uv;                 // per point; boundary points keep theirs
   double radius = 0;                   // the radius used (unit-cube scale)
   int minNeighbours = 0, maxNeighbours = 0;  // over interior points
-  int fallbacks = 0;                   // shape-preserving: points on their ball's hull, given inverse-distance weights
+  int grown = 0;                       // shape-preserving: points whose ball was grown (2r, 4r) to surround them
+  int fallbacks = 0;                   // shape-preserving: points on their ball's hull even so, given inverse-distance weights
   double seconds = 0;
   std::vector<std::string> warnings;
 };
