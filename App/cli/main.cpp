@@ -70,9 +70,10 @@ const char* kUsage =
     "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
-    "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform] [--radius R] [--json]\n"
+    "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform] [--radius R] [--corners I,J,K,L] [--json]\n"
     "                meshless parameterization of a point cloud; CLOUD.txt lines 'x y z flag u v' (flag 1: boundary point\n"
-    "                with its u v; 0: interior); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud\n"
+    "                with its u v; 0: interior); boundary points without u v get chord length between four corners\n"
+    "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
     "                labeled_region.obj with its labeled_region.labels.json)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
@@ -437,7 +438,15 @@ int cmdParam(const Args& a) {
   CloudParameterizationOptions o;
   o.weights = cloudWeightsByName(a.get("--method", "shape"));
   if (a.has("--radius")) o.radius = number(a.get("--radius"), "--radius");
-  const FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
+  FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
+  if (!c.boundaryUVGiven || a.has("--corners")) {
+    std::vector<int> corners;
+    if (a.has("--corners")) {
+      std::istringstream in(a.get("--corners"));
+      for (std::string t; std::getline(in, t, ',');) corners.push_back(static_cast<int>(number(t, "--corners")));
+    }
+    c.uv = boundaryChordParameters(c.points, c.boundary, corners);
+  }
   const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, o);
   std::ostringstream text;
   text.precision(17);

@@ -209,3 +209,79 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
 }
 
 }  // namespace holefill
+
+namespace holefill {
+
+Eigen::MatrixX2d boundaryChordParameters(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const std::vector<int>& corners) {
+  const int n = static_cast<int>(points.rows());
+  if (static_cast<int>(boundary.size()) != n) throw Error("the boundary flags do not match the points in number");
+  std::vector<int> loop;
+  for (int k = 0; k < n; ++k)
+    if (boundary[k]) loop.push_back(k);
+  const int L = static_cast<int>(loop.size());
+  if (L < 4) throw Error("the cloud has " + std::to_string(L) + " boundary points; four corners need at least 4");
+  // The cloud's best-fit plane; boundary points by angle about their centroid there.
+  const Eigen::RowVector3d mean = points.colwise().mean();
+  const Eigen::MatrixX3d q = points.rowwise() - mean;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(q.transpose() * q);
+  Eigen::Vector3d e1 = eig.eigenvectors().col(2), e2 = eig.eigenvectors().col(1);
+  Eigen::MatrixX2d flat(n, 2);
+  flat.col(0) = q * e1;
+  flat.col(1) = q * e2;
+  Eigen::RowVector2d centre = Eigen::RowVector2d::Zero();
+  for (int k : loop) centre += flat.row(k) / L;
+  std::sort(loop.begin(), loop.end(), [&](int a, int b) {
+    return std::atan2(flat(a, 1) - centre.y(), flat(a, 0) - centre.x()) < std::atan2(flat(b, 1) - centre.y(), flat(b, 0) - centre.x());
+  });
+  // Corners: given, or the four sharpest turns (neighbours two steps away), at least L/8 apart.
+  std::vector<int> at;  // loop positions of the corners
+  if (!corners.empty()) {
+    if (corners.size() != 4) throw Error("give exactly four corners, got " + std::to_string(corners.size()));
+    for (int c : corners) {
+      const auto it = std::find(loop.begin(), loop.end(), c);
+      if (c < 0 || c >= n || it == loop.end()) throw Error("corner " + std::to_string(c) + " is not a boundary point");
+      at.push_back(static_cast<int>(it - loop.begin()));
+    }
+    std::sort(at.begin(), at.end());
+    if (std::adjacent_find(at.begin(), at.end()) != at.end()) throw Error("the four corners must be four different points");
+  } else {
+    std::vector<std::pair<double, int>> turn;
+    for (int k = 0; k < L; ++k) {
+      const Eigen::Vector2d a = (flat.row(loop[k]) - flat.row(loop[(k + L - 2) % L])).transpose(), b = (flat.row(loop[(k + 2) % L]) - flat.row(loop[k])).transpose();
+      turn.emplace_back(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)), k);
+    }
+    std::sort(turn.rbegin(), turn.rend());
+    const int gap = std::max(1, L / 8);
+    for (const auto& [angle, k] : turn) {
+      bool apart = true;
+      for (int c : at) apart = apart && std::min(std::abs(c - k), L - std::abs(c - k)) >= gap;
+      if (apart) at.push_back(k);
+      if (at.size() == 4) break;
+    }
+    if (at.size() < 4) throw Error("could not find four corners on the boundary: give them");
+    std::sort(at.begin(), at.end());
+  }
+  // The first corner: the one nearest the plane's lower left (u along e1, v along e2).
+  int first = 0;
+  for (int c = 1; c < 4; ++c)
+    if (flat(loop[at[c]], 0) + flat(loop[at[c]], 1) < flat(loop[at[first]], 0) + flat(loop[at[first]], 1)) first = c;
+  Eigen::MatrixX2d uv = Eigen::MatrixX2d::Zero(n, 2);
+  for (int side = 0; side < 4; ++side) {
+    const int from = at[(first + side) % 4], to = at[(first + side + 1) % 4];
+    std::vector<int> run;
+    for (int k = from;; k = (k + 1) % L) {
+      run.push_back(loop[k]);
+      if (k == to) break;
+    }
+    std::vector<double> s(run.size(), 0.0);
+    for (size_t k = 1; k < run.size(); ++k) s[k] = s[k - 1] + (points.row(run[k]) - points.row(run[k - 1])).norm();
+    for (size_t k = 0; k < run.size(); ++k) {
+      const double t = s.back() > 0 ? s[k] / s.back() : 0;
+      const double u[4] = {t, 1, 1 - t, 0}, v[4] = {0, t, 1, 1 - t};
+      uv.row(run[k]) << u[side], v[side];
+    }
+  }
+  return uv;
+}
+
+}  // namespace holefill

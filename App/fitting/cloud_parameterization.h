@@ -43,3 +43,17 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
 CloudWeights cloudWeightsByName(const std::string& name);  // "uniform", "invdist", "shape"; throws Error otherwise
 
 }  // namespace holefill
+
+namespace holefill {
+
+// Parameters for a cloud's boundary points given without them (bidgcn.md sec. 3.2): the points
+// ordered around the boundary (by angle about their centroid in the cloud's best-fit plane, so the
+// boundary must be star-shaped from there), four corners — the given point indices, or the four
+// sharpest turns of the ordered loop, kept apart — on the unit square's corners, anticlockwise
+// from the one nearest the plane's lower left, and chord length along each side in between.
+// Returns uv per point (rows of non-boundary points 0). Throws Error for fewer than 4 boundary
+// points or corners that are not 4 distinct boundary points.
+Eigen::MatrixX2d boundaryChordParameters(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary,
+                                         const std::vector<int>& corners = {});
+
+}  // namespace holefill

@@ -107,3 +107,39 @@ TEST(CloudParameterization, RefusesBadClouds) {
   }
   EXPECT_THROW(cloudWeightsByName("bidgcn2"), Error);
 }
+
+TEST(CloudParameterization, BoundaryParametersByChordLengthFromFourCorners) {
+  // A planar grid's frame, its points not in loop order: the corners are found, the sides get chord
+  // length, which on an evenly sampled straight frame is the grid's own parameters (up to the
+  // square's symmetries: which corner comes first depends on the plane's axes); then the interior
+  // follows exactly.
+  Cloud c = grid(12, [](double, double) { return 0.0; }, 0.2, 4);
+  const Eigen::MatrixX2d uv = boundaryChordParameters(c.points, c.boundary);
+  double best = 1e9;
+  for (int sym = 0; sym < 8; ++sym) {
+    double worst = 0;
+    for (Eigen::Index k = 0; k < c.uv.rows(); ++k) {
+      if (!c.boundary[k]) continue;
+      double u = c.uv(k, 0), v = c.uv(k, 1);
+      if (sym & 1) u = 1 - u;
+      if (sym & 2) v = 1 - v;
+      if (sym & 4) std::swap(u, v);
+      worst = std::max(worst, (uv.row(k) - Eigen::RowVector2d(u, v)).norm());
+    }
+    best = std::min(best, worst);
+  }
+  EXPECT_LT(best, 1e-12);
+  const CloudParameterization p = parameterizeCloud(c.points, c.boundary, uv);
+  for (Eigen::Index k = 0; k < uv.rows(); ++k)
+    if (c.boundary[k]) EXPECT_EQ(p.uv.row(k), uv.row(k));
+  // Given corners land on the square's corners; a curved sheet's sides get monotone parameters.
+  const Cloud wavy = grid(12, [](double u, double v) { return 0.3 * std::sin(3 * u) * std::cos(2 * v); });
+  const std::vector<int> corners = {0, 12, 12 * 13 + 12, 12 * 13};
+  const Eigen::MatrixX2d w = boundaryChordParameters(wavy.points, wavy.boundary, corners);
+  for (int cidx : corners) {
+    EXPECT_NEAR(std::min(w(cidx, 0), 1 - w(cidx, 0)), 0, 1e-15);
+    EXPECT_NEAR(std::min(w(cidx, 1), 1 - w(cidx, 1)), 0, 1e-15);
+  }
+  EXPECT_THROW(boundaryChordParameters(wavy.points, wavy.boundary, {0, 12, 12}), Error);
+  EXPECT_THROW(boundaryChordParameters(wavy.points, wavy.boundary, {0, 12, 13, 14}), Error);  // 14 is interior
+}
