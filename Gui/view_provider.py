@@ -1,26 +1,18 @@
-"""View provider of the Fill object: an icon, the fill drawn in a distinct colour,
-and double-click to edit it in the Fill task panel."""
+"""View providers: the Fill object (its icon, the fill in a distinct colour) and the boundary
+labels (segments in their labels' colours, with letters); double-click edits either in its task
+panel."""
 import HoleFillGui
 
 
-class FillViewProvider:
-    def __init__(self, vobj):
-        vobj.Proxy = self
-        vobj.ShapeColor = (0.95, 0.62, 0.20)
+class _EditInPanel:
+    """Double-click (or Edit) opens the object's task panel; nothing is pickled."""
 
-    def attach(self, vobj):
-        self.Object = vobj.Object
-
-    def getIcon(self):
-        return HoleFillGui.icon("HoleFill_Fill.svg")
-
-    def claimChildren(self):
-        return []
+    def panel(self, obj):
+        raise NotImplementedError
 
     def setEdit(self, vobj, mode=0):
         import FreeCADGui
-        from HoleFillGui import task_fill
-        FreeCADGui.Control.showDialog(task_fill.FillTaskPanel(existing=vobj.Object))
+        FreeCADGui.Control.showDialog(self.panel(vobj.Object))
         return True
 
     def unsetEdit(self, vobj, mode=0):
@@ -38,7 +30,26 @@ class FillViewProvider:
         return None
 
 
-class LabelsViewProvider:
+class FillViewProvider(_EditInPanel):
+    def __init__(self, vobj):
+        vobj.Proxy = self
+        vobj.ShapeColor = (0.95, 0.62, 0.20)
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+
+    def getIcon(self):
+        return HoleFillGui.icon("HoleFill_Fill.svg")
+
+    def claimChildren(self):
+        return []
+
+    def panel(self, obj):
+        from HoleFillGui import task_fill
+        return task_fill.FillTaskPanel(existing=obj)
+
+
+class LabelsViewProvider(_EditInPanel):
     """View provider of BoundaryLabels: each segment's polyline in its label's colour (N red, E
     green, S blue, W amber, unlabeled grey), thick, with its letter at the segment's middle."""
 
@@ -97,22 +108,6 @@ class LabelsViewProvider:
     def getIcon(self):
         return HoleFillGui.icon("HoleFill_Labels.svg")
 
-    def setEdit(self, vobj, mode=0):
-        import FreeCADGui
+    def panel(self, obj):
         from HoleFillGui import task_labels
-        FreeCADGui.Control.showDialog(task_labels.LabelPanel(vobj.Object.Source, existing=vobj.Object))
-        return True
-
-    def unsetEdit(self, vobj, mode=0):
-        import FreeCADGui
-        FreeCADGui.Control.closeDialog()
-        return True
-
-    def doubleClicked(self, vobj):
-        return self.setEdit(vobj)
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
+        return task_labels.LabelPanel(obj.Source, existing=obj)

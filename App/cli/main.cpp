@@ -453,23 +453,10 @@ int cmdParam(const Args& a) {
   for (Eigen::Index k = 0; k < p.uv.rows(); ++k) text << p.uv(k, 0) << ' ' << p.uv(k, 1) << '\n';
   writeFileAtomically(a.get("--out"), text.str());
   if (a.has("--json")) {
-    JsonWriter j;
-    j.beginObject()
-        .field("points", static_cast<int>(c.points.rows()))
-        .field("boundary_points", static_cast<int>(std::count(c.boundary.begin(), c.boundary.end(), true)))
-        .field("method", a.get("--method", "shape"))
-        .field("radius", p.radius)
-        .field("min_neighbours", p.minNeighbours)
-        .field("max_neighbours", p.maxNeighbours)
-        .field("fallbacks", p.fallbacks)
-        .field("seconds", p.seconds)
-        .field("warnings", p.warnings)
-        .endObject();
-    std::cout << j.str() << "\n";
+    std::cout << p.toJson() << "\n";
   } else {
     std::printf("%d points (%d on the boundary), %s weights, radius %.4g (unit-cube scale), %d-%d neighbours, %.3f s; wrote %s\n",
-                static_cast<int>(c.points.rows()), static_cast<int>(std::count(c.boundary.begin(), c.boundary.end(), true)),
-                a.get("--method", "shape").c_str(), p.radius, p.minNeighbours, p.maxNeighbours, p.seconds, a.get("--out").c_str());
+                p.points, p.boundaryPoints, p.method.c_str(), p.radius, p.minNeighbours, p.maxNeighbours, p.seconds, a.get("--out").c_str());
   }
   for (const auto& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   return 0;

@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "geometry/error.h"
+#include "geometry/json_writer.h"
 
 namespace holefill {
 
@@ -120,6 +121,23 @@ std::vector<int> shapePreservingStar(const Eigen::MatrixX3d& p, int i, const std
 
 }  // namespace
 
+std::string CloudParameterization::toJson() const {
+  JsonWriter j;
+  j.beginObject()
+      .field("points", points)
+      .field("boundary_points", boundaryPoints)
+      .field("method", method)
+      .field("radius", radius)
+      .field("min_neighbours", minNeighbours)
+      .field("max_neighbours", maxNeighbours)
+      .field("grown", grown)
+      .field("fallbacks", fallbacks)
+      .field("seconds", seconds)
+      .field("warnings", warnings)
+      .endObject();
+  return j.str();
+}
+
 CloudWeights cloudWeightsByName(const std::string& name) {
   if (name == "uniform") return CloudWeights::Uniform;
   if (name == "invdist" || name == "inverse-distance") return CloudWeights::InverseDistance;
@@ -146,6 +164,9 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
   if (!(extent > 0)) throw Error("all points of the cloud coincide");
   const Eigen::MatrixX3d p = (points.rowwise() - lo) / extent;
   CloudParameterization out;
+  out.points = n;
+  out.boundaryPoints = nb;
+  out.method = o.weights == CloudWeights::Uniform ? "uniform" : o.weights == CloudWeights::InverseDistance ? "invdist" : "shape";
   out.radius = o.radius > 0 ? o.radius : 3.0 / std::sqrt(static_cast<double>(n));
   const std::vector<std::vector<int>> ball = radiusNeighbours(p, out.radius);
   for (int k = 0; k < n; ++k)

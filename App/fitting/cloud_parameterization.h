@@ -31,6 +31,9 @@ struct CloudParameterization {
   int fallbacks = 0;                   // shape-preserving: points on their ball's hull even so, given inverse-distance weights
   double seconds = 0;
   std::vector<std::string> warnings;
+  int points = 0, boundaryPoints = 0;
+  std::string method;                  // the weights' name, as cloudWeightsByName takes it
+  std::string toJson() const;          // the report the CLI and Python print
 };
 
 // `boundary[k]` marks points whose parameters boundaryUV.row(k) are given (other rows ignored).

@@ -431,17 +431,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::gil_scoped_release release;
         p = parameterizeCloud(points, boundary, boundaryUV, o);
       }
-      JsonWriter j;
-      j.beginObject()
-          .field("method", method)
-          .field("radius", p.radius)
-          .field("min_neighbours", p.minNeighbours)
-          .field("max_neighbours", p.maxNeighbours)
-          .field("fallbacks", p.fallbacks)
-          .field("seconds", p.seconds)
-          .field("warnings", p.warnings)
-          .endObject();
-      return py::make_tuple(p.uv, j.str());
+      return py::make_tuple(p.uv, p.toJson());
     });
   }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("method") = "shape", py::arg("radius") = 0.0,
      "Meshless parameterization of a point cloud with fixed boundary parameters: (uv per point, report JSON).");

@@ -2,10 +2,12 @@
 Shape is the filling face (or the source with the face sewn in), recomputed from
 its Source link whenever the source changes. The source is only read."""
 import json
+from functools import partial
 
 import FreeCAD
 
 import HoleFill
+from HoleFill.transaction import ensureProperty
 
 
 # Set by the Gui while it recomputes a Fill: callable(fraction) -> bool (False cancels).
@@ -18,13 +20,7 @@ class FillFeature:
         self.setupProperties(obj)
 
     def setupProperties(self, obj):
-        props = obj.PropertiesList
-
-        def add(kind, name, group, doc, default=None):
-            if name not in props:
-                obj.addProperty(kind, name, group, doc)
-                if default is not None:
-                    setattr(obj, name, default)
+        add = partial(ensureProperty, obj)
 
         add("App::PropertyLinkSub", "Source", "Fill", "Object and edges of the hole (one edge names its whole loop)")
         add("App::PropertyEnumeration", "Method", "Fill", "Parameterization of the trimming curve")

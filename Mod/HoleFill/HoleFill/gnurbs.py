@@ -12,8 +12,10 @@ are (i, j, d) triples, sharp edges (i, j) pairs, anchors {vertex: (x, y, z)} at 
 points. The cage is never modified. Errors raise HoleFillError naming the vertex or quad.
 """
 import json
+from functools import partial
 
 import HoleFillApp
+from HoleFill.transaction import ensureProperty
 
 __all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature", "cageShell", "importCage",
            "extraordinaryPoints"]
@@ -194,11 +196,7 @@ class GnurbsFeature:
         self.setupProperties(obj)
 
     def setupProperties(self, obj):
-        props = obj.PropertiesList
-
-        def add(kind, name, group, doc):
-            if name not in props:
-                obj.addProperty(kind, name, group, doc)
+        add = partial(ensureProperty, obj)
 
         add("App::PropertyLink", "Source", "G-NURBS", "Object whose faces are the quad cage")
         add("App::PropertyStringList", "SharpEdges", "G-NURBS", "Crease edges as 'i-j' (cage vertices, 0-based)")

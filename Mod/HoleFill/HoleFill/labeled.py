@@ -11,8 +11,10 @@ Vertex indices are 0-based, each segment's vertices consecutive along the region
 The mesh is never modified. Errors raise HoleFillError.
 """
 import json
+from functools import partial
 
 import HoleFillApp
+from HoleFill.transaction import ensureProperty
 
 __all__ = ["fitLabeled", "boundaryLoop", "cornerSplits", "segmentsOf", "makeBoundaryLabels", "makeLabeledFit"]
 
@@ -129,11 +131,7 @@ class BoundaryLabelsFeature:
         self.setupProperties(obj)
 
     def setupProperties(self, obj):
-        props = obj.PropertiesList
-
-        def add(kind, name, group, doc):
-            if name not in props:
-                obj.addProperty(kind, name, group, doc)
+        add = partial(ensureProperty, obj)
 
         add("App::PropertyLink", "Source", "Labels", "The mesh region (Mesh feature) whose boundary is labeled")
         add("App::PropertyIntegerList", "Loop", "Labels", "The outer boundary loop (0-based mesh points, in order)")
@@ -209,18 +207,12 @@ class LabeledFitFeature:
         self.setupProperties(obj)
 
     def setupProperties(self, obj):
-        props = obj.PropertiesList
-
-        def add(kind, name, group, doc, default=None):
-            if name not in props:
-                obj.addProperty(kind, name, group, doc)
-                if default is not None:
-                    setattr(obj, name, default)
+        add = partial(ensureProperty, obj)
 
         add("App::PropertyLink", "Labels", "Fit", "The boundary labels (and through them the mesh region)")
         add("App::PropertyIntegerConstraint", "ControlPointsU", "Fit", "Control points along u (cubic, at least 4)", (12, 4, 200, 1))
         add("App::PropertyIntegerConstraint", "ControlPointsV", "Fit", "Control points along v (cubic, at least 4)", (12, 4, 200, 1))
-        if "Extension" not in props:
+        if "Extension" not in obj.PropertiesList:
             obj.addProperty("App::PropertyEnumeration", "Extension", "Fit", "Extension to the four-sided domain: G2, G1 or none")
             obj.Extension = ["G2", "G1", "none"]
         add("App::PropertyIntegerConstraint", "Margin", "Fit", "Grid layers added around the domain", (0, 0, 50, 1))

@@ -1,5 +1,7 @@
 """Adding a parametric object in one undo step, or not at all: the document is left exactly as
-it was when building it fails or the object does not compute (with or without undo enabled)."""
+it was when building it fails or the object does not compute (with or without undo enabled);
+and giving a parametric object the properties it lacks (new ones, or a document saved by an
+older version)."""
 import HoleFillApp
 
 
@@ -22,3 +24,11 @@ def addParametric(doc, title, name, setup, what):
         raise
     doc.commitTransaction()
     return obj
+
+
+def ensureProperty(obj, kind, name, group, doc, default=None):
+    """Adds property `name` to obj unless it has it, set to `default` when one is given."""
+    if name not in obj.PropertiesList:
+        obj.addProperty(kind, name, group, doc)
+        if default is not None:
+            setattr(obj, name, default)
