@@ -1,9 +1,11 @@
-// Adaptive THB-spline fitting of a parameterized point cloud (bidgcn.md sec. 6): penalized least
+// Adaptive THB-spline fitting of a parameterized point cloud (bidgcn.md sec. 5): penalized least
 // squares (data term plus λ times the thin-plate energy) in a THB space (thb_spline.h); points
 // whose error exceeds the tolerance mark the active cell they lie in, which is refined with its
 // neighbours; each iteration corrects the parameters once (Newton footpoint projection, a new
 // parameter kept only where it brings the point closer); it stops at the tolerance or the
-// iteration cap. The result is exactly a B-spline at the finest level.
+// iteration cap. The result is exactly a B-spline at the finest level. The thin-plate term is
+// fairness_energy.h's (the mixed derivative counted twice, where the paper's J counts it once),
+// and the correction runs on the fit before the refinement rather than after it.
 #pragma once
 
 #include <Eigen/Dense>

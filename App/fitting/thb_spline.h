@@ -1,4 +1,4 @@
-// Truncated hierarchical B-splines (THB) over [0, 1]² (bidgcn.md sec. 6, after Giannelli, Jüttler
+// Truncated hierarchical B-splines (THB) over [0, 1]² (bidgcn.md sec. 5, after Giannelli, Jüttler
 // & Speleers, "THB-splines: the truncated basis for hierarchical splines", CAGD 29, 2012): level
 // ℓ is the clamped uniform tensor-product spline space of the given degree with (cellsU·2^ℓ) ×
 // (cellsV·2^ℓ) cells; the nested domains Ω^0 = [0,1]² ⊇ Ω^1 ⊇ … are unions of cells, grown by
