@@ -26,6 +26,7 @@
 #include "geometry/text_file.h"
 #include "fitting/cloud_parameterization.h"
 #include "fitting/labeled_fit.h"
+#include "fitting/thb_fit.h"
 #include "geometry/flagged_cloud.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
@@ -74,6 +75,9 @@ const char* kUsage =
     "                meshless parameterization of a point cloud; CLOUD.txt lines 'x y z flag u v' (flag 1: boundary point\n"
     "                with its u v; 0: interior); boundary points without u v get chord length between four corners\n"
     "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud\n"
+    "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--param shape|invdist|uniform] [--thb] [--tolerance T]\n"
+    "                [--degree 3] [--cells 4] [--iterations 8] [--json]   spline fit of a point cloud (as for param) with\n"
+    "                parameter correction; --thb refines adaptively (THB-splines) until the max error <= T (of the diagonal)\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
     "                labeled_region.obj with its labeled_region.labels.json)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
@@ -89,7 +93,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular"};  // --no-refine: mesh-fill and gnurbs
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -462,6 +466,45 @@ int cmdParam(const Args& a) {
   return 0;
 }
 
+// Exit 0 when written and the tolerance met, 3 when written without meeting it.
+int cmdFitPoints(const Args& a) {
+  if (a.input.empty()) throw Error("fit-points: no point cloud given (lines x y z flag [u v])");
+  if (!a.has("--out")) throw Error("fit-points: --out OUT.brep (or .step) is required");
+  const std::string method = a.get("--param", "shape");
+  if (method == "bidgcn") throw Error("--param bidgcn: the BIDGCN parameterizer is not built yet; use shape, invdist or uniform");
+  CloudParameterizationOptions po;
+  po.weights = cloudWeightsByName(method);
+  ThbFitOptions fo;
+  if (a.has("--degree")) fo.degree = static_cast<int>(number(a.get("--degree"), "--degree"));
+  if (a.has("--tolerance")) fo.tolerance = number(a.get("--tolerance"), "--tolerance");
+  if (a.has("--cells")) fo.baseCells = static_cast<int>(number(a.get("--cells"), "--cells"));
+  if (a.has("--iterations")) fo.maxIterations = static_cast<int>(number(a.get("--iterations"), "--iterations"));
+  if (!a.has("--thb")) fo.maxLevels = 1;  // one uniform level: plain least squares with parameter correction
+  if (fo.degree < 1 || fo.degree > 7) throw Error("--degree must be 1 to 7");
+  if (!(fo.tolerance > 0)) throw Error("--tolerance must be positive");
+  FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
+  if (!c.boundaryUVGiven) c.uv = boundaryChordParameters(c.points, c.boundary);
+  const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, po);
+  const ThbFitResult r = fitThb(c.points, p.uv, fo);
+  writeShape(BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face(), a.get("--out"));
+  if (a.has("--json")) {
+    JsonWriter j;
+    j.beginObject().key("iterations").beginArray();
+    for (const auto& h : r.history)
+      j.beginObject().field("dof", h.dof).field("mse", h.mse).field("max_error", h.maxError).field("refined_cells", h.refinedCells)
+          .field("corrected_parameters", h.correctedParameters).endObject();
+    j.endArray().field("levels", r.space.levels()).field("met_tolerance", r.metTolerance).endObject();
+    std::cout << "{\"parameterization\":" << p.toJson() << "," << j.str().substr(1) << "\n";
+  } else {
+    for (const auto& h : r.history)
+      std::printf("%5d functions: mse %.2e, max error %.2e of the diagonal; %d cells refined, %d parameters corrected\n", h.dof, h.mse, h.maxError,
+                  h.refinedCells, h.correctedParameters);
+    std::printf("%s after %zu iterations, %d levels; wrote %s\n", r.metTolerance ? "tolerance met" : "tolerance NOT met", r.history.size(),
+                r.space.levels(), a.get("--out").c_str());
+  }
+  return r.metTolerance ? 0 : 3;
+}
+
 int cmdSamples(const Args& a) {
   if (a.input.empty()) throw Error("samples: no output folder");
   for (const auto& n : samples::names()) {
@@ -511,6 +554,7 @@ int main(int argc, char** argv) {
     if (a.verb == "gnurbs") return cmdGnurbs(a);
     if (a.verb == "fit") return cmdFit(a);
     if (a.verb == "param") return cmdParam(a);
+    if (a.verb == "fit-points") return cmdFitPoints(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

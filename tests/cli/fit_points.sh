@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# holefill fit-points: a cloud from a smooth sheet with a bump, its frame carrying parameters, is
+# fitted adaptively (--thb) to the tolerance with fewer functions than the uniform finest level
+# would need, and the error falls every iteration; one uniform level does not meet it (exit 3);
+# the BIDGCN method, a bad degree and a broken cloud are refused, nothing written.
+. "$(dirname "$0")/checks.sh"
+"$PY" - "$T" <<'PY'
+import math, random, sys
+t = sys.argv[1]; random.seed(4)
+def S(u, v):
+    return (u, v, 0.25 * math.sin(2.5 * u) * math.cos(1.8 * v) + 0.1 * math.exp(-40 * ((u - .6) ** 2 + (v - .4) ** 2)))
+with open(t + "/cloud.txt", "w") as f:
+    m = 12
+    for k in range(4 * m):
+        side, q = divmod(k, m); s = q / m
+        u, v = [(s, 0), (1, s), (1 - s, 1), (0, 1 - s)][side]
+        f.write("%r %r %r 1 %r %r\n" % (S(u, v) + (u, v)))
+    for k in range(1500):
+        f.write("%r %r %r 0\n" % S(random.uniform(.02, .98), random.uniform(.02, .98)))
+open(t + "/broken.txt", "w").write("1 2 3 1 0\n")
+PY
+if "$H" fit-points "$T/cloud.txt" --thb --tolerance 1e-3 --out "$T/thb.brep" --json >"$T/thb.json" 2>"$T/err"; then ok "adaptive THB fit written (exit 0)"; else bad "thb: $(cat "$T/err")"; fi
+"$PY" - "$T" <<'PY' && ok "tolerance met, error falling, fewer functions than the uniform finest level" || bad "thb report: $(cat "$T/thb.json")"
+import json, sys
+r = json.load(open(sys.argv[1] + "/thb.json"))
+it = r["iterations"]
+assert r["met_tolerance"] and it[-1]["max_error"] <= 1e-3, r
+assert all(b["max_error"] < a["max_error"] for a, b in zip(it, it[1:])), it
+finest = (4 * 2 ** (r["levels"] - 1) + 3) ** 2
+assert r["levels"] > 1 and it[-1]["dof"] < finest, (r["levels"], it[-1]["dof"], finest)
+assert r["parameterization"]["method"] == "shape" and r["parameterization"]["points"] == 1548, r["parameterization"]
+PY
+[ -s "$T/thb.brep" ] && ok "surface written" || bad "no surface"
+"$H" fit-points "$T/cloud.txt" --tolerance 1e-3 --out "$T/uniform.brep" >/dev/null 2>&1; rc=$?
+[ "$rc" = 3 ] && [ -s "$T/uniform.brep" ] && ok "one uniform level: written, tolerance not met (exit 3)" || bad "uniform level: rc=$rc"
+expect_refusal "bidgcn not built" "not built yet" "$T/o.brep" fit-points "$T/cloud.txt" --param bidgcn --out "$T/o.brep"
+expect_refusal "bad degree" "degree" "$T/o.brep" fit-points "$T/cloud.txt" --degree 0 --out "$T/o.brep"
+expect_refusal "broken cloud" "expected x y z flag" "$T/o.brep" fit-points "$T/broken.txt" --out "$T/o.brep"
+finish
