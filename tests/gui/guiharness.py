@@ -82,3 +82,27 @@ def sample_document(doc_name, label, sample):
     src.Shape = shape
     doc.recompute()
     return doc, src
+
+
+def click_at(view, p):
+    """A real click (xdotool) at the screen position of 3D point p in the active view."""
+    import subprocess
+    from PySide2 import QtCore
+    vp = view.graphicsView().viewport()
+    sx, sy = view.getPointOnScreen(p)
+    g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
+    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
+    pump(250)
+    subprocess.run(["xdotool", "click", "1"], check=True)
+    pump(400)
+
+
+def task_ok_button():
+    """The visible OK button of the open task panel (AssertionError when there is none)."""
+    import FreeCADGui
+    from PySide2 import QtWidgets
+    for bb in FreeCADGui.getMainWindow().findChildren(QtWidgets.QDialogButtonBox):
+        b = bb.button(QtWidgets.QDialogButtonBox.Ok)
+        if bb.isVisible() and b is not None and b.isVisible():
+            return b
+    raise AssertionError("no OK button")

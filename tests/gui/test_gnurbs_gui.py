@@ -6,7 +6,6 @@ and lifted; OK creates the parametric object: G² off the creases, the EP on its
 a cage vertex rebuilds the surface; undo removes the object. Bad selections answer with a
 message and change nothing. Screenshots are saved."""
 import os
-import subprocess
 import tempfile
 
 import FreeCAD
@@ -33,17 +32,6 @@ def overlay_sharp_count():
                         return sep.getChild(j).numVertices.getNum()
         return 0
     return -1  # no overlay at all
-
-
-def click(view, p):
-    """A real click at the screen position of 3D point p."""
-    vp = view.graphicsView().viewport()
-    sx, sy = view.getPointOnScreen(p)
-    g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
-    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
-    h.pump(250)
-    subprocess.run(["xdotool", "click", "1"], check=True)
-    h.pump(400)
 
 
 def body():
@@ -85,7 +73,7 @@ def body():
     ep = list(eps)[0]
     FreeCADGui.Selection.clearSelection()
     face_center = cage_obj.Shape.Faces[10].CenterOfMass
-    click(view, face_center)
+    h.click_at(view, face_center)
     assert [o.Name for o in FreeCADGui.Selection.getSelection()] == [cage_obj.Name], FreeCADGui.Selection.getSelection()
     FreeCADGui.runCommand("HoleFill_GnurbsSurface")
     h.pump(800)
@@ -114,16 +102,16 @@ def body():
     assert len(edges) == 3, line
     for e in edges:
         mid = cage_obj.Shape.getElement(by_pair[e]).CenterOfMass
-        click(view, mid)
+        h.click_at(view, mid)
     h.pump(300)
     assert sorted(sharp_list.item(i).text() for i in range(sharp_list.count())) == sorted("%d-%d" % e for e in edges), \
         [sharp_list.item(i).text() for i in range(sharp_list.count())]
     assert overlay_sharp_count() == 3
     # A second click unmarks, a third marks again.
     mid = cage_obj.Shape.getElement(by_pair[edges[1]]).CenterOfMass
-    click(view, mid)
+    h.click_at(view, mid)
     assert sharp_list.count() == 2, sharp_list.count()
-    click(view, mid)
+    h.click_at(view, mid)
     assert sharp_list.count() == 3 and overlay_sharp_count() == 3
     view.saveImage(h.shot("gui_gnurbs_1_sharp.png"), 1024, 768, "White")
 
@@ -135,12 +123,7 @@ def body():
     anchors.cellWidget(0, 3).setValue(pts[ep].z + 0.5)
     h.pump(200)
 
-    ok = None
-    for bb in mw.findChildren(QtWidgets.QDialogButtonBox):
-        b = bb.button(QtWidgets.QDialogButtonBox.Ok)
-        if bb.isVisible() and b is not None and b.isVisible():
-            ok = b
-    assert ok is not None, "no OK button"
+    ok = h.task_ok_button()
     QTest.mouseClick(ok, QtCore.Qt.LeftButton)
     h.pump(1500)
     assert overlay_sharp_count() == -1, "overlay left after OK"

@@ -9,7 +9,6 @@ selections (nothing, a closed mesh, a mesh without labels) answer with a message
 nothing. Screenshots are saved."""
 import json
 import math
-import subprocess
 
 import FreeCAD
 import FreeCADGui
@@ -44,22 +43,7 @@ def region_mesh():
 
 def click(view, x, y):
     """A real click at the screen position of the surface point over (x, y)."""
-    p = FreeCAD.Vector(x, y, wave(x, y))
-    vp = view.graphicsView().viewport()
-    sx, sy = view.getPointOnScreen(p)
-    g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
-    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
-    h.pump(200)
-    subprocess.run(["xdotool", "click", "1"], check=True)
-    h.pump(350)
-
-
-def ok_button(mw):
-    for bb in mw.findChildren(QtWidgets.QDialogButtonBox):
-        b = bb.button(QtWidgets.QDialogButtonBox.Ok)
-        if bb.isVisible() and b is not None and b.isVisible():
-            return b
-    raise AssertionError("no OK button")
+    h.click_at(view, FreeCAD.Vector(x, y, wave(x, y)))
 
 
 def segment_texts(lst):
@@ -128,7 +112,7 @@ def body():
     click(view, 3.0, 0.0)
     assert segs.count() == 6, segment_texts(segs)
 
-    QTest.mouseClick(ok_button(mw), QtCore.Qt.LeftButton)
+    QTest.mouseClick(h.task_ok_button(), QtCore.Qt.LeftButton)
     h.pump(1000)
     labels_obj = [o for o in doc.Objects if hasattr(o, "LabelsJson")]
     assert len(labels_obj) == 1, [o.Name for o in doc.Objects]
@@ -149,7 +133,7 @@ def body():
     view.fitAll()
     h.pump(300)
     view.saveImage(h.shot("gui_labeled_2_preview.png"), 1024, 768, "White")
-    QTest.mouseClick(ok_button(mw), QtCore.Qt.LeftButton)
+    QTest.mouseClick(h.task_ok_button(), QtCore.Qt.LeftButton)
     h.pump(1500)
     fits = [o for o in doc.Objects if hasattr(o, "Untrimmed")]
     assert len(fits) == 1, [o.Name for o in doc.Objects]
