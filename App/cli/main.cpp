@@ -71,18 +71,23 @@ const char* kUsage =
     "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
-    "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform] [--radius R] [--corners I,J,K,L] [--json]\n"
+    "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
+    "                [--weights W.pt] [--json]\n"
     "                meshless parameterization of a point cloud; CLOUD.txt lines 'x y z flag u v' (flag 1: boundary point\n"
     "                with its u v; 0: interior); boundary points without u v get chord length between four corners\n"
-    "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud\n"
-    "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--param shape|invdist|uniform] [--thb] [--tolerance T]\n"
-    "                [--degree 3] [--cells 4] [--iterations 8] [--json]   spline fit of a point cloud (as for param) with\n"
+    "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud;\n"
+    "                bidgcn: the learned parameterizer (shipped weights unless --weights)\n"
+    "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--param shape|invdist|uniform|bidgcn] [--thb] [--tolerance T]\n"
+    "                [--degree 3] [--cells 4] [--iterations 8] [--weights W.pt] [--json]   spline fit of a point cloud (as for param) with\n"
     "                parameter correction; --thb refines adaptively (THB-splines) until the max error <= T (of the diagonal)\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
     "                labeled_region.obj with its labeled_region.labels.json)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
+    "  holefill train bidgcn [--out DIR] [--steps N] [--batch B] [--noise S] [--lr L] [--threads T] [--max-hours H]\n"
+    "                (resumes from DIR/checkpoint.pt)\n"
     "  holefill eval uvtran [--weights W] [--samples N] [--split test|validation]\n"
+    "  holefill eval bidgcn [--weights W] [--clouds N] [--interior N] [--noise S] [--split test|validation]\n"
     "  holefill --version\n";
 
 struct Args {
@@ -442,6 +447,7 @@ int cmdParam(const Args& a) {
   CloudParameterizationOptions o;
   o.weights = cloudWeightsByName(a.get("--method", "shape"));
   if (a.has("--radius")) o.radius = number(a.get("--radius"), "--radius");
+  o.weightsFile = a.get("--weights", "");
   FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
   if (!c.boundaryUVGiven || a.has("--corners")) {
     std::vector<int> corners;
@@ -459,8 +465,11 @@ int cmdParam(const Args& a) {
   if (a.has("--json")) {
     std::cout << p.toJson() << "\n";
   } else {
-    std::printf("%d points (%d on the boundary), %s weights, radius %.4g (unit-cube scale), %d-%d neighbours, %.3f s; wrote %s\n",
-                p.points, p.boundaryPoints, p.method.c_str(), p.radius, p.minNeighbours, p.maxNeighbours, p.seconds, a.get("--out").c_str());
+    if (o.weights == CloudWeights::Bidgcn)
+      std::printf("%d points (%d on the boundary), BIDGCN, %.3f s; wrote %s\n", p.points, p.boundaryPoints, p.seconds, a.get("--out").c_str());
+    else
+      std::printf("%d points (%d on the boundary), %s weights, radius %.4g (unit-cube scale), %d-%d neighbours, %.3f s; wrote %s\n",
+                  p.points, p.boundaryPoints, p.method.c_str(), p.radius, p.minNeighbours, p.maxNeighbours, p.seconds, a.get("--out").c_str());
   }
   for (const auto& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   return 0;
@@ -470,10 +479,9 @@ int cmdParam(const Args& a) {
 int cmdFitPoints(const Args& a) {
   if (a.input.empty()) throw Error("fit-points: no point cloud given (lines x y z flag [u v])");
   if (!a.has("--out")) throw Error("fit-points: --out OUT.brep (or .step) is required");
-  const std::string method = a.get("--param", "shape");
-  if (method == "bidgcn") throw Error("--param bidgcn: the BIDGCN parameterizer is not built yet; use shape, invdist or uniform");
   CloudParameterizationOptions po;
-  po.weights = cloudWeightsByName(method);
+  po.weights = cloudWeightsByName(a.get("--param", "shape"));
+  po.weightsFile = a.get("--weights", "");
   ThbFitOptions fo;
   if (a.has("--degree")) fo.degree = static_cast<int>(number(a.get("--degree"), "--degree"));
   if (a.has("--tolerance")) fo.tolerance = number(a.get("--tolerance"), "--tolerance");

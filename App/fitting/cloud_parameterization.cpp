@@ -13,6 +13,7 @@
 
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "learn/bidgcn.h"
 
 namespace holefill {
 
@@ -142,7 +143,8 @@ CloudWeights cloudWeightsByName(const std::string& name) {
   if (name == "uniform") return CloudWeights::Uniform;
   if (name == "invdist" || name == "inverse-distance") return CloudWeights::InverseDistance;
   if (name == "shape" || name == "shape-preserving") return CloudWeights::ShapePreserving;
-  throw Error("unknown parameterization method '" + name + "': use shape, invdist or uniform");
+  if (name == "bidgcn") return CloudWeights::Bidgcn;
+  throw Error("unknown parameterization method '" + name + "': use bidgcn, shape, invdist or uniform");
 }
 
 CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
@@ -166,12 +168,21 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
   CloudParameterization out;
   out.points = n;
   out.boundaryPoints = nb;
-  out.method = o.weights == CloudWeights::Uniform ? "uniform" : o.weights == CloudWeights::InverseDistance ? "invdist" : "shape";
+  const char* names[] = {"uniform", "invdist", "shape", "bidgcn"};
+  out.method = names[static_cast<int>(o.weights)];
   out.radius = o.radius > 0 ? o.radius : 3.0 / std::sqrt(static_cast<double>(n));
   const std::vector<std::vector<int>> ball = radiusNeighbours(p, out.radius);
   for (int k = 0; k < n; ++k)
     for (int j : ball[k])
       if (j > k && (p.row(j) - p.row(k)).squaredNorm() <= 1e-24) throw Error("points " + std::to_string(k) + " and " + std::to_string(j) + " coincide: remove duplicates first");
+  if (o.weights == CloudWeights::Bidgcn) {
+    learn::BidgcnOptions bo;
+    bo.weights = o.weightsFile;
+    out.uv = learn::bidgcnParameters(p, boundary, boundaryUV, bo);
+    out.radius = 0;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  }
 
   // Rows u_i − Σ λ_ik u_k = 0 for interior points, u_j = given for boundary points.
   std::vector<Eigen::Triplet<double>> T;

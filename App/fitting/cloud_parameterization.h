@@ -7,7 +7,8 @@
 // shape-preserving (Floater 1997: the Delaunay neighbours of the point in the projection of its
 // ball onto the ball's best-fit plane, weights from the geodesic polar map, which reproduce
 // planar configurations exactly). These are the baselines BIDGCN is measured against, and user
-// options in their own right.
+// options in their own right. The same entry also runs BIDGCN (learn/bidgcn.h) on the same
+// checked, unit-cube-scaled cloud, so every door offers all four methods one way.
 #pragma once
 
 #include <Eigen/Dense>
@@ -16,11 +17,14 @@
 
 namespace holefill {
 
-enum class CloudWeights { Uniform, InverseDistance, ShapePreserving };
+// Bidgcn is not a weighting: the learned network predicts the interior parameters directly.
+enum class CloudWeights { Uniform, InverseDistance, ShapePreserving, Bidgcn };
 
 struct CloudParameterizationOptions {
   CloudWeights weights = CloudWeights::ShapePreserving;
-  double radius = 0;  // neighbourhood radius in the unit-cube-scaled cloud; 0: 3/√|P|
+  double radius = 0;  // neighbourhood radius in the unit-cube-scaled cloud; 0: 3/√|P| (BIDGCN: the
+                      // duplicate check's only; the network's graphs have their trained radius)
+  std::string weightsFile;  // BIDGCN: empty for the shipped weights
 };
 
 struct CloudParameterization {
@@ -43,7 +47,7 @@ struct CloudParameterization {
 CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
                                         const CloudParameterizationOptions& options = {});
 
-CloudWeights cloudWeightsByName(const std::string& name);  // "uniform", "invdist", "shape"; throws Error otherwise
+CloudWeights cloudWeightsByName(const std::string& name);  // "uniform", "invdist", "shape", "bidgcn"; throws Error otherwise
 
 }  // namespace holefill
 

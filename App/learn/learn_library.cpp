@@ -56,9 +56,10 @@ const LearnLibrary& learnLibrary() {
     LearnLibrary l;
     l.path = path;
     l.predict = reinterpret_cast<HoleFillUvtranPredictFn>(dlsym(h, "holefill_uvtran_predict"));
+    l.bidgcnPredict = reinterpret_cast<HoleFillBidgcnPredictFn>(dlsym(h, "holefill_bidgcn_predict"));
     l.main = reinterpret_cast<HoleFillLearnMainFn>(dlsym(h, "holefill_learn_main"));
     l.info = reinterpret_cast<HoleFillLearnInfoFn>(dlsym(h, "holefill_learn_info"));
-    if (!l.predict || !l.main || !l.info) { tried += " " + path + " (entry points missing);"; continue; }
+    if (!l.predict || !l.bidgcnPredict || !l.main || !l.info) { tried += " " + path + " (entry points missing);"; continue; }
     lib = l;
     return lib;
   }
@@ -66,20 +67,28 @@ const LearnLibrary& learnLibrary() {
   throw Error(failure);
 }
 
-std::string defaultUvtranWeights() {
-  if (const char* e = std::getenv("HOLEFILL_UVTRAN_WEIGHTS")) return e;
+namespace {
+
+std::string shippedWeights(const char* variable, const std::string& file) {
+  if (const char* e = std::getenv(variable)) return e;
   std::vector<std::string> c;
   try {
-    c.push_back(dirOf(learnLibrary().path) + "/Resources/models/uvtran.pt");
+    c.push_back(dirOf(learnLibrary().path) + "/Resources/models/" + file);
   } catch (const Error&) {
   }
-  c.push_back(thisModuleDir() + "/Resources/models/uvtran.pt");
+  c.push_back(thisModuleDir() + "/Resources/models/" + file);
 #ifdef HOLEFILL_SOURCE_DIR
-  c.push_back(std::string(HOLEFILL_SOURCE_DIR) + "/Resources/models/uvtran.pt");
+  c.push_back(std::string(HOLEFILL_SOURCE_DIR) + "/Resources/models/" + file);
 #endif
   for (const auto& p : c)
     if (exists(p)) return p;
   return "";
 }
+
+}  // namespace
+
+std::string defaultUvtranWeights() { return shippedWeights("HOLEFILL_UVTRAN_WEIGHTS", "uvtran.pt"); }
+
+std::string defaultBidgcnWeights() { return shippedWeights("HOLEFILL_BIDGCN_WEIGHTS", "bidgcn.pt"); }
 
 }  // namespace holefill::learn

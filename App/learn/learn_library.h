@@ -12,7 +12,12 @@ extern "C" {
 // knots (4 u then 4 v). Returns 0, or non-zero with a message in err.
 typedef int (*HoleFillUvtranPredictFn)(const char* weights, const double* points, int batch, int n, int threads,
                                        double* poles, double* knots, char* err, int errLen);
-// `holefill train uvtran ...` and `holefill eval uvtran ...`: argv[0] is the verb.
+// BIDGCN parameters of a cloud's interior points (bidgcn.md sec. 4): n points (xyz interleaved)
+// already scaled into the unit cube, boundary[k] != 0 for points whose (u, v) in [0, 1]^2 is given
+// in uv (2 per point); writes (u, v) for the others into uv. Returns 0, or non-zero with a message.
+typedef int (*HoleFillBidgcnPredictFn)(const char* weights, const double* points, const unsigned char* boundary, int n,
+                                       int threads, double* uv, char* err, int errLen);
+// `holefill train uvtran|bidgcn ...` and `holefill eval uvtran ...`: argv[0] is the verb.
 typedef int (*HoleFillLearnMainFn)(int argc, char** argv);
 typedef const char* (*HoleFillLearnInfoFn)();
 }
@@ -22,6 +27,7 @@ namespace holefill::learn {
 struct LearnLibrary {
   std::string path;
   HoleFillUvtranPredictFn predict = nullptr;
+  HoleFillBidgcnPredictFn bidgcnPredict = nullptr;
   HoleFillLearnMainFn main = nullptr;
   HoleFillLearnInfoFn info = nullptr;
 };
@@ -33,5 +39,9 @@ const LearnLibrary& learnLibrary();
 // The shipped UVTran weights: $HOLEFILL_UVTRAN_WEIGHTS, else Resources/models/uvtran.pt next to
 // the loaded library, else in the source tree. Empty when none exists.
 std::string defaultUvtranWeights();
+
+// The shipped BIDGCN weights: $HOLEFILL_BIDGCN_WEIGHTS, else Resources/models/bidgcn.pt, looked
+// for as the UVTran weights are. Empty when none exists.
+std::string defaultBidgcnWeights();
 
 }  // namespace holefill::learn

@@ -1,5 +1,6 @@
 // The C entry points of libholefill_learn.so (declared in learn/learn_library.h) and the
 // backend check. Exceptions never cross them: every failure becomes a return code and a message.
+#include <dlfcn.h>
 #include <sys/stat.h>
 
 #include <cstring>
@@ -9,6 +10,8 @@
 
 #include "geometry/error.h"
 #include "learn/learn_library.h"
+#include "learn/torch/bidgcn_net.h"
+#include "learn/torch/bidgcn_training.h"
 #include "learn/torch/learn_backend.h"
 #include "learn/torch/uvtran_net.h"
 #include "learn/torch/uvtran_training.h"
@@ -27,6 +30,12 @@ std::string backendInfo() {
   }
 }
 
+void setLearnThreads(int threads) {
+  static const auto openblas = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (openblas) openblas(1);
+  if (threads > 0 && threads != torch::get_num_threads()) torch::set_num_threads(threads);  // resizing the pool is costly
+}
+
 namespace {
 
 void setError(char* err, int len, const std::string& msg) {
@@ -37,21 +46,23 @@ void setError(char* err, int len, const std::string& msg) {
 }
 
 // Loaded networks by path; reloaded when the file changes.
+template <class Net>
 struct Cached {
   long long mtime = 0;
   long long size = 0;
-  UvtranNet net{nullptr};
+  Net net{nullptr};
 };
 
-UvtranNet cachedNet(const std::string& path) {
+template <class Net>
+Net cachedNet(const std::string& path, const char* model, Net (*load)(const std::string&)) {
   static std::mutex m;
-  static std::map<std::string, Cached> cache;
+  static std::map<std::string, Cached<Net>> cache;
   struct stat st;
-  if (::stat(path.c_str(), &st) != 0) throw Error("UVTran weights not found: " + path);
+  if (::stat(path.c_str(), &st) != 0) throw Error(std::string(model) + " weights not found: " + path);
   std::lock_guard<std::mutex> lock(m);
-  Cached& c = cache[path];
+  Cached<Net>& c = cache[path];
   if (!c.net || c.mtime != (long long)st.st_mtime || c.size != (long long)st.st_size) {
-    c.net = loadUvtran(path);
+    c.net = load(path);
     c.mtime = st.st_mtime;
     c.size = st.st_size;
   }
@@ -102,6 +113,38 @@ int trainMain(int argc, char** argv) {
   return trainUvtran(o);
 }
 
+int trainBidgcnMain(int argc, char** argv) {
+  const Args a = parse(argc, argv, 2, {"out", "steps", "batch", "interior", "noise", "lr", "threads", "validate-every",
+                                       "validation-clouds", "checkpoint-minutes", "max-hours", "seed"});
+  BidgcnTrainOptions o;
+  o.outDir = a.get("out", "bidgcn-run");
+  o.steps = std::stoi(a.get("steps", std::to_string(o.steps)));
+  o.batch = std::stoi(a.get("batch", std::to_string(o.batch)));
+  o.interior = std::stoi(a.get("interior", std::to_string(o.interior)));
+  o.noise = std::stod(a.get("noise", "0"));
+  o.learningRate = std::stod(a.get("lr", std::to_string(o.learningRate)));
+  o.threads = std::stoi(a.get("threads", std::to_string(o.threads)));
+  o.validateEvery = std::stoi(a.get("validate-every", std::to_string(o.validateEvery)));
+  o.validationClouds = std::stoi(a.get("validation-clouds", std::to_string(o.validationClouds)));
+  o.checkpointMinutes = std::stod(a.get("checkpoint-minutes", std::to_string(o.checkpointMinutes)));
+  o.maxHours = std::stod(a.get("max-hours", "0"));
+  o.seed = std::stoull(a.get("seed", "1"));
+  return trainBidgcn(o);
+}
+
+int evalBidgcnMain(int argc, char** argv) {
+  const Args a = parse(argc, argv, 2, {"weights", "clouds", "interior", "noise", "split", "threads"});
+  const std::string w = a.get("weights", defaultBidgcnWeights());
+  const bool test = a.get("split", "test") == "test";
+  const BidgcnEvaluation ev = evaluateBidgcn(w, std::stoi(a.get("clouds", "100")), std::stoi(a.get("interior", "1000")),
+                                             std::stod(a.get("noise", "0")), test, std::stoi(a.get("threads", "1")));
+  std::printf("{\"weights\": \"%s\", \"split\": \"%s\", \"clouds\": %d, \"median_mse\": %.6g, \"mean_mse\": %.6g, "
+              "\"median_exact_mse\": %.6g, \"ms_per_cloud\": %.4g, \"parameters\": %lld}\n",
+              w.c_str(), test ? "test" : "validation", ev.clouds, ev.medianMse, ev.meanMse, ev.medianExactMse,
+              1e3 * ev.secondsPerCloud, ev.parameters);
+  return 0;
+}
+
 int evalMain(int argc, char** argv) {
   const Args a = parse(argc, argv, 2, {"weights", "samples", "split", "window", "threads"});
   const std::string w = a.get("weights", defaultUvtranWeights());
@@ -126,14 +169,14 @@ extern "C" int holefill_uvtran_predict(const char* weights, const double* points
                                        double* poles, double* knots, char* err, int errLen) {
   try {
     if (!weights || !*weights) throw holefill::Error("no UVTran weights file given");
-    UvtranNet net = cachedNet(weights);
+    UvtranNet net = cachedNet<UvtranNet>(weights, "UVTran", loadUvtran);
     if (n != net->config.points)
       throw holefill::Error("UVTran expects " + std::to_string(net->config.points) + " boundary points, got " +
                             std::to_string(n));
     if (batch < 1) throw holefill::Error("UVTran needs at least one boundary");
     for (int i = 0; i < 3 * n * batch; ++i)
       if (!std::isfinite(points[i])) throw holefill::Error("UVTran input holds NaN or infinity");
-    if (threads > 0 && threads != torch::get_num_threads()) torch::set_num_threads(threads);  // resizing the pool is costly
+    setLearnThreads(threads);
     torch::NoGradGuard ng;
     torch::Tensor x = torch::empty({batch, n, 3});
     for (int i = 0; i < 3 * n * batch; ++i) x.data_ptr<float>()[i] = float(points[i]);
@@ -154,13 +197,48 @@ extern "C" int holefill_uvtran_predict(const char* weights, const double* points
   }
 }
 
+extern "C" int holefill_bidgcn_predict(const char* weights, const double* points, const unsigned char* boundary, int n,
+                                       int threads, double* uv, char* err, int errLen) {
+  try {
+    if (!weights || !*weights) throw holefill::Error("no BIDGCN weights file given");
+    BidgcnNet net = cachedNet<BidgcnNet>(weights, "BIDGCN", loadBidgcn);
+    std::vector<int> in, bd;
+    for (int k = 0; k < n; ++k) (boundary[k] ? bd : in).push_back(k);
+    if (bd.empty()) throw holefill::Error("BIDGCN needs boundary points with parameters");
+    for (int k = 0; k < 3 * n; ++k)
+      if (!std::isfinite(points[k])) throw holefill::Error("BIDGCN input holds NaN or infinity");
+    for (int k : bd)
+      if (!std::isfinite(uv[2 * k]) || !std::isfinite(uv[2 * k + 1])) throw holefill::Error("a BIDGCN boundary parameter is NaN or infinity");
+    if (in.empty()) return 0;
+    setLearnThreads(threads);
+    torch::NoGradGuard ng;
+    torch::Tensor xi = torch::empty({(int64_t)in.size(), 3}), xb = torch::empty({(int64_t)bd.size(), 3}),
+                  ub = torch::empty({(int64_t)bd.size(), 2});
+    auto I = xi.accessor<float, 2>(), B = xb.accessor<float, 2>(), U = ub.accessor<float, 2>();
+    for (size_t k = 0; k < in.size(); ++k)
+      for (int d = 0; d < 3; ++d) I[k][d] = float(points[3 * in[k] + d]);
+    for (size_t k = 0; k < bd.size(); ++k) {
+      for (int d = 0; d < 3; ++d) B[k][d] = float(points[3 * bd[k] + d]);
+      for (int d = 0; d < 2; ++d) U[k][d] = float(uv[2 * bd[k] + d]);
+    }
+    const torch::Tensor out = net->forward(xi, xb, ub).contiguous();
+    const auto O = out.accessor<float, 2>();
+    for (size_t k = 0; k < in.size(); ++k)
+      for (int d = 0; d < 2; ++d) uv[2 * in[k] + d] = O[k][d];
+    return 0;
+  } catch (const std::exception& e) {
+    setError(err, errLen, e.what());
+    return 1;
+  }
+}
+
 extern "C" int holefill_learn_main(int argc, char** argv) {
   try {
-    if (argc < 2) throw holefill::Error("usage: holefill train uvtran [--out DIR ...] | holefill eval uvtran [--weights W ...]");
+    if (argc < 2) throw holefill::Error("usage: holefill train uvtran|bidgcn [--out DIR ...] | holefill eval uvtran|bidgcn [--weights W ...]");
     const std::string verb = argv[0], model = argv[1];
-    if (model != "uvtran") throw holefill::Error("unknown model '" + model + "': only uvtran is trained here");
-    if (verb == "train") return trainMain(argc, argv);
-    if (verb == "eval") return evalMain(argc, argv);
+    if (model != "uvtran" && model != "bidgcn") throw holefill::Error("unknown model '" + model + "': use uvtran or bidgcn");
+    if (verb == "train") return model == "uvtran" ? trainMain(argc, argv) : trainBidgcnMain(argc, argv);
+    if (verb == "eval") return model == "uvtran" ? evalMain(argc, argv) : evalBidgcnMain(argc, argv);
     throw holefill::Error("unknown verb '" + verb + "'");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "holefill: error: %s\n", e.what());

@@ -1,3 +1,4 @@
+#include "learn/torch/learn_backend.h"
 #include "learn/torch/uvtran_training.h"
 
 #include <sys/stat.h>
@@ -133,7 +134,7 @@ bool fileExists(const std::string& p) {
 int trainUvtran(const UvtranTrainOptions& o) {
   HF_CHECK(!o.outDir.empty(), "training needs an output folder");
   ::mkdir(o.outDir.c_str(), 0755);
-  torch::set_num_threads(o.threads);
+  setLearnThreads(o.threads);
   torch::manual_seed(o.seed);
   UvtranConfig cfg;
   cfg.width = o.width; cfg.heads = o.heads; cfg.layers = o.layers; cfg.feedForward = o.feedForward;
@@ -228,7 +229,7 @@ int trainUvtran(const UvtranTrainOptions& o) {
 }
 
 UvtranEvaluation evaluateUvtran(const std::string& weights, int count, bool test, int window, int threads) {
-  torch::set_num_threads(threads);
+  setLearnThreads(threads);
   UvtranNet net = loadUvtran(weights);
   UvtranEvaluation ev = evaluate(net, test ? UvtranSplit::Test : UvtranSplit::Validation, count, window, true);
   // Inference time of one hole through both stages (no batching, as in a fill).

@@ -1,0 +1,222 @@
+#include "learn/torch/bidgcn_net.h"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+#include <ATen/Parallel.h>
+
+#include "geometry/error.h"
+
+namespace holefill::learn {
+
+namespace {
+constexpr int64_t kFormat = 20261201;  // bump when the architecture changes incompatibly
+
+torch::Tensor cloudBatchNorm(const torch::Tensor& x, const torch::Tensor& gamma, const torch::Tensor& beta) {
+  return torch::batch_norm(x, gamma, beta, {}, {}, /*training=*/true, 0.0, 1e-5, false);
+}
+
+torch::Tensor sumInto(const torch::Tensor& values, const torch::Tensor& dst, int64_t n) {
+  return torch::zeros({n, values.size(1)}, values.options()).index_add(0, dst, values);
+}
+}  // namespace
+
+BidgcnConfig BidgcnConfig::fromVector(const std::vector<double>& v) {
+  HF_CHECK(v.size() == 5, "BIDGCN config record has " + std::to_string(v.size()) + " entries, expected 5");
+  BidgcnConfig c;
+  c.radius = v[0];
+  c.maxNeighbours = int(v[1]);
+  c.width = int(v[2]);
+  c.hidden = int(v[3]);
+  c.head = int(v[4]);
+  HF_CHECK(c.radius > 0 && c.maxNeighbours >= 1 && c.width >= 1 && c.hidden >= 0 && c.head >= 1 && c.width <= 4096 &&
+               c.head <= 4096 && c.hidden <= 64 && c.maxNeighbours <= 4096,
+           "BIDGCN config record is out of range");
+  return c;
+}
+
+EdgeMlpImpl::EdgeMlpImpl(const std::vector<int>& sizes) {
+  for (size_t l = 0; l + 1 < sizes.size(); ++l) {
+    linears.push_back(register_module("linear" + std::to_string(l), torch::nn::Linear(sizes[l], sizes[l + 1])));
+    if (l + 2 < sizes.size()) {
+      gammas.push_back(register_parameter("norm" + std::to_string(l) + "_weight", torch::ones({sizes[l + 1]})));
+      betas.push_back(register_parameter("norm" + std::to_string(l) + "_bias", torch::zeros({sizes[l + 1]})));
+    }
+  }
+}
+
+torch::Tensor EdgeMlpImpl::sumOverEdges(const torch::Tensor& xi, const torch::Tensor& xj, const RadiusGraph& g) {
+  HF_CHECK(linears.size() == 2, "sumOverEdges needs a two-layer edge MLP");
+  const int64_t c = xi.size(-1);
+  const torch::Tensor W = linears[0]->weight;  // [h, 2c + extra] acting on [x_i, x_j − x_i, extra_j]
+  const torch::Tensor Wi = W.narrow(1, 0, c), Wj = W.narrow(1, c, W.size(1) - c);
+  const torch::Tensor own = torch::linear(xi, Wi - Wj.narrow(1, 0, c), linears[0]->bias);
+  const torch::Tensor other = torch::linear(xj, Wj);
+  const torch::Tensor e = torch::relu(cloudBatchNorm(own.index_select(0, g.dst) + other.index_select(0, g.src), gammas[0], betas[0]));
+  return torch::linear(sumInto(e, g.dst, xi.size(0)), linears[1]->weight) + g.degree * linears[1]->bias;
+}
+
+torch::Tensor EdgeMlpImpl::forward(torch::Tensor x) {
+  for (size_t l = 0; l < linears.size(); ++l) {
+    x = linears[l]->forward(x);
+    if (l + 1 < linears.size()) x = torch::relu(cloudBatchNorm(x, gammas[l], betas[l]));
+  }
+  return x;
+}
+
+RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, double r, int k) {
+  torch::NoGradGuard ng;
+  const torch::Tensor f = from.detach().to(torch::kFloat), t = to.detach().to(torch::kFloat);
+  const torch::Tensor d2 = torch::addmm(f.pow(2).sum(-1, true) + t.pow(2).sum(-1).unsqueeze(0), f, t.t(), 1, -2).contiguous();
+  const int64_t n = f.size(0), m = t.size(0);
+  const float r2 = float(r * r);
+  // Per row: the candidates within r, cut to the k nearest by a selection on the row's distances
+  // when there are more (a scan; a top-k over all m is several times slower).
+  std::vector<std::vector<int64_t>> rows(n);
+  const float* D = d2.data_ptr<float>();
+  at::parallel_for(0, n, 128, [&](int64_t a, int64_t b) {
+    std::vector<float> within;
+    for (int64_t i = a; i < b; ++i) {
+      const float* d = D + i * m;
+      within.clear();
+      for (int64_t j = 0; j < m; ++j)
+        if (d[j] <= r2) within.push_back(d[j]);
+      float cut = r2;
+      if (int64_t(within.size()) > k) {
+        std::nth_element(within.begin(), within.begin() + (k - 1), within.end());
+        cut = within[k - 1];
+      }
+      auto& c = rows[i];
+      c.reserve(std::min<int64_t>(k, within.size()));
+      for (int64_t j = 0; j < m && int64_t(c.size()) < k; ++j)
+        if (d[j] <= cut) c.push_back(j);
+    }
+  });
+  int64_t E = 0;
+  for (const auto& c : rows) E += c.size();
+  RadiusGraph g{torch::empty({E}, torch::kLong), torch::empty({E}, torch::kLong), torch::empty({n, 1})};
+  int64_t *S = g.src.data_ptr<int64_t>(), *T = g.dst.data_ptr<int64_t>();
+  float* deg = g.degree.data_ptr<float>();
+  int64_t e = 0;
+  for (int64_t i = 0; i < n; ++i) {
+    deg[i] = float(rows[i].size());
+    for (int64_t j : rows[i]) S[e] = j, T[e++] = i;
+  }
+  g.degree = g.degree.to(from.dtype());
+  return g;
+}
+
+BidgcnNetImpl::BidgcnNetImpl(const BidgcnConfig& c) : config(c) {
+  const int w = c.width;
+  interiorEdges = register_module("interior_edges", EdgeMlp(std::vector<int>{6, w, w}));
+  boundaryEdges = register_module("boundary_edges", EdgeMlp(std::vector<int>{8, w, w}));
+  for (int l = 0; l < c.hidden; ++l)
+    hidden.push_back(register_module("hidden" + std::to_string(l), torch::nn::Linear(2 * w, w)));
+  head = register_module("head", EdgeMlp(std::vector<int>{w * (c.hidden + 1), c.head, c.head, 2}));
+}
+
+torch::Tensor BidgcnNetImpl::forward(const torch::Tensor& interior, const torch::Tensor& boundary, const torch::Tensor& boundaryUV) {
+  const double r = config.radius;
+  const int K = config.maxNeighbours;
+  const int64_t n = interior.size(0);
+  lastDegrees.clear();
+  // Input layer: messages from interior and boundary neighbours, averaged together.
+  const RadiusGraph gI = radiusGraph(interior, interior, r, K), gB = radiusGraph(interior, boundary, r, K);
+  lastDegrees.push_back(gI.degree.mean().item<double>());
+  lastDegrees.push_back(gB.degree.mean().item<double>());
+  torch::Tensor x = torch::relu((interiorEdges->sumOverEdges(interior, interior, gI) +
+                                 boundaryEdges->sumOverEdges(interior, torch::cat({boundary, boundaryUV}, -1), gB)) /
+                                (gI.degree + gB.degree));  // ≥ 1: the point itself is its neighbour
+  std::vector<torch::Tensor> outs{x};
+  // Dynamic edge convolutions: the graph is rebuilt in the features each layer receives. Their
+  // MLP is one linear map, so the mean of h(x_i, x_j − x_i) is h(x_i, mean_j x_j − x_i).
+  for (auto& layer : hidden) {
+    const RadiusGraph g = radiusGraph(x, x, r, K);
+    lastDegrees.push_back(g.degree.mean().item<double>());
+    const torch::Tensor mean = sumInto(x.index_select(0, g.src), g.dst, n) / g.degree;
+    x = torch::relu(layer->forward(torch::cat({x, mean - x}, -1)));
+    outs.push_back(x);
+  }
+  return torch::sigmoid(head->forward(torch::cat(outs, -1)));
+}
+
+int64_t BidgcnNetImpl::parameterCount() const {
+  int64_t n = 0;
+  for (const auto& p : parameters()) n += p.numel();
+  return n;
+}
+
+torch::Tensor bezierFitLoss(const torch::Tensor& interiorUV, const torch::Tensor& interior, const torch::Tensor& boundary,
+                            const torch::Tensor& boundaryUV, int degree) {
+  const torch::Tensor uv = torch::cat({boundaryUV, interiorUV}, 0).to(torch::kDouble);
+  const torch::Tensor p = torch::cat({boundary, interior}, 0).to(torch::kDouble);
+  const auto basis = [&](const torch::Tensor& t) {  // [N] -> [N, degree + 1]
+    std::vector<torch::Tensor> b;
+    for (int i = 0; i <= degree; ++i) {
+      double binom = 1;
+      for (int k = 1; k <= i; ++k) binom = binom * (degree - k + 1) / k;
+      b.push_back(binom * t.pow(i) * (1 - t).pow(degree - i));
+    }
+    return torch::stack(b, -1);
+  };
+  const int64_t N = uv.size(0), m = degree + 1;
+  const torch::Tensor A = (basis(uv.select(-1, 0)).unsqueeze(-1) * basis(uv.select(-1, 1)).unsqueeze(-2)).reshape({N, m * m});
+  const torch::Tensor AtA = torch::mm(A.t(), A) + 1e-12 * torch::eye(m * m, A.options());
+  const torch::Tensor c = torch::linalg_solve(AtA, torch::mm(A.t(), p));
+  return (torch::mm(A, c) - p).pow(2).sum(-1).mean();
+}
+
+void saveBidgcn(BidgcnNet& net, const std::string& path, const std::string& card) {
+  torch::serialize::OutputArchive a;
+  a.write("format", torch::tensor({kFormat}));
+  a.write("config", torch::tensor(net->config.toVector(), torch::kDouble));
+  std::vector<int64_t> bytes(card.begin(), card.end());
+  a.write("card", torch::tensor(bytes.empty() ? std::vector<int64_t>{0} : bytes));
+  torch::serialize::OutputArchive params;
+  net->save(params);
+  a.write("net", params);
+  const std::string tmp = path + ".tmp";
+  a.save_to(tmp);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Error("cannot write BIDGCN weights to " + path);
+}
+
+BidgcnNet loadBidgcn(const std::string& path) {
+  if (!std::ifstream(path, std::ios::binary)) throw Error("BIDGCN weights not found: " + path);
+  torch::serialize::InputArchive a;
+  try {
+    a.load_from(path);
+  } catch (const c10::Error&) {
+    throw Error("BIDGCN weights " + path + " are not a readable torch archive (truncated or corrupt)");
+  }
+  torch::Tensor format, config;
+  try {
+    a.read("format", format);
+    a.read("config", config);
+  } catch (const c10::Error&) {
+    throw Error("BIDGCN weights " + path + " have no format/config record: not a HoleFill BIDGCN file");
+  }
+  if (format.numel() != 1 || format.item<int64_t>() != kFormat)
+    throw Error("BIDGCN weights " + path + " are of format " + std::to_string(format.numel() ? format.item<int64_t>() : 0) +
+                ", this build reads " + std::to_string(kFormat) + ": retrain or use matching weights");
+  const torch::Tensor cfgT = config.to(torch::kDouble).contiguous();
+  BidgcnNet net(BidgcnConfig::fromVector(std::vector<double>(cfgT.data_ptr<double>(), cfgT.data_ptr<double>() + cfgT.numel())));
+  std::map<std::string, std::vector<int64_t>> shapes;
+  for (const auto& p : net->named_parameters()) shapes[p.key()] = p.value().sizes().vec();
+  try {
+    torch::serialize::InputArchive params;
+    a.read("net", params);
+    net->load(params);
+  } catch (const c10::Error& e) {
+    throw Error("BIDGCN weights " + path + " do not match the network: " + std::string(e.what_without_backtrace()).substr(0, 200));
+  }
+  for (const auto& p : net->named_parameters()) {
+    if (p.value().sizes().vec() != shapes[p.key()]) throw Error("BIDGCN weights " + path + ": parameter " + p.key() + " has the wrong shape");
+    if (!torch::isfinite(p.value()).all().item<bool>())
+      throw Error("BIDGCN weights " + path + ": parameter " + p.key() + " holds NaN or infinity");
+  }
+  net->eval();
+  return net;
+}
+
+}  // namespace holefill::learn

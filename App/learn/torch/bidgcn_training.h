@@ -1,0 +1,41 @@
+// Training and evaluation of the BIDGCN parameterization network on the synthetic clouds of
+// patch_cloud.h (bidgcn.md sec. 4.2-4.4), on CPU: unsupervised, the loss is the biquadratic
+// least-squares residual at the predicted parameters. The paper's 100,000 stored clouds become an
+// endless stream from disjoint seeds (never the validation or test seeds), so a run is
+// reproducible and resumes from its checkpoint at any step. Adam with warm-up and cosine decay
+// replaces the paper's SGD at 0.1 with plateau decay: it gets further within a 2-core budget.
+// Torch-free header.
+#pragma once
+
+#include <string>
+
+namespace holefill::learn {
+
+struct BidgcnTrainOptions {
+  std::string outDir;             // checkpoint, log.csv and bidgcn.pt go here
+  int steps = 20000;
+  int batch = 4;                  // clouds per step
+  int interior = 1000, boundary = 34;
+  double noise = 0;               // Gaussian σ drawn uniformly in [0, noise] per training cloud
+  double learningRate = 1e-3;     // Adam, linear warm-up then cosine decay to 5%
+  int threads = 2;
+  int validateEvery = 500;        // steps
+  int validationClouds = 64;      // fixed validation seeds
+  double checkpointMinutes = 5;
+  double maxHours = 0;            // > 0: checkpoint and stop after this much wall time (resume later)
+  unsigned long long seed = 1;    // parameter initialization
+};
+
+int trainBidgcn(const BidgcnTrainOptions& options);  // 0 when finished, 3 when stopped by maxHours
+
+struct BidgcnEvaluation {
+  int clouds = 0;
+  double medianMse = 0, meanMse = 0;     // biquadratic fit at the predicted parameters (patch_cloud.h)
+  double medianExactMse = 0;             // ... at the exact parameters (the floor; > 0 only with noise)
+  double secondsPerCloud = 0;            // median forward pass, batch of one
+  long long parameters = 0;
+};
+
+BidgcnEvaluation evaluateBidgcn(const std::string& weights, int clouds, int interior, double noise, bool test, int threads);
+
+}  // namespace holefill::learn
