@@ -5,7 +5,7 @@ import FreeCADGui
 import HoleFillGui
 
 COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurface", "HoleFill_ImportCage", "HoleFill_LabelBoundary",
-            "HoleFill_FitLabeled", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
+            "HoleFill_FitLabeled", "HoleFill_FitPointCloud", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
 
 
 class FillHoleCommand:
@@ -119,6 +119,27 @@ class FitLabeledCommand:
         FreeCADGui.Control.showDialog(panel)
 
 
+class FitPointCloudCommand:
+    def GetResources(self):
+        return {"Pixmap": HoleFillGui.icon("HoleFill_PointFit.svg"),
+                "MenuText": "Fit point cloud",
+                "ToolTip": "Fit a B-spline face to a Points or Mesh object: boundary (found for a bare cloud),\n"
+                           "parameters (BIDGCN or classical), adaptive THB refinement with parameter correction\n"
+                           "until the tolerance; shows the hierarchical mesh and the point errors."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None
+
+    def Activated(self):
+        from HoleFillGui import inspect_panels, task_point_fit
+        try:
+            panel = task_point_fit.FitPanel(task_point_fit.source_from_selection())
+        except task_point_fit.SelectionError as e:
+            inspect_panels._message(str(e))
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
 class ImportCageCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_Gnurbs.svg"),
@@ -207,6 +228,7 @@ def register():
     FreeCADGui.addCommand("HoleFill_ImportCage", ImportCageCommand())
     FreeCADGui.addCommand("HoleFill_LabelBoundary", LabelBoundaryCommand())
     FreeCADGui.addCommand("HoleFill_FitLabeled", FitLabeledCommand())
+    FreeCADGui.addCommand("HoleFill_FitPointCloud", FitPointCloudCommand())
     FreeCADGui.addCommand("HoleFill_CurvatureMap", CurvatureMapCommand())
     FreeCADGui.addCommand("HoleFill_ZebraStripes", ZebraStripesCommand())
     FreeCADGui.addCommand("HoleFill_ContinuityCheck", ContinuityCheckCommand())

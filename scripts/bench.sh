@@ -17,7 +17,11 @@
 #     pictures in bench-out/fitting. BENCH_ONLY=fitting runs part 5 alone.
 #  6. holefill_bench_cloud_params: point-cloud parameterization (shape-preserving, inverse
 #     distance, uniform) on the bidgcn paper's random biquadratic clouds: biquadratic-fit MSE,
+#     distance, uniform) and BIDGCN on the bidgcn paper's random Bézier clouds: fit MSE,
 #     failures, time. BENCH_ONLY=cloud-params runs part 6 alone (BENCH_CLOUDS, default 100).
+#  7. holefill_bench_thb: adaptive THB fitting vs uniform B-spline refinement on a region of the
+#     Stanford bunny (CGAL's bunny00.off) as a bare cloud: error against degrees of freedom, with
+#     a picture (bench-out/thb/thb_bunny.png). BENCH_ONLY=thb runs part 7 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -41,6 +45,25 @@ bench_cloud_params() {
   echo
   "$build/tests/holefill_bench_cloud_params" "${BENCH_CLOUDS:-100}" | tee "$BENCH_OUT/bench_cloud_params.md"
 }
+bench_thb() {
+  cmake -S "$root" -B "$build" >/dev/null
+  cmake --build "$build" --target holefill_bench_thb -j "$(nproc)"
+  if [ ! -d "$BENCH_OUT/cgal-data/meshes" ]; then
+    tar -xzf /usr/share/doc/libcgal-demo/data.tar.gz -C "$BENCH_OUT" && mv "$BENCH_OUT/data" "$BENCH_OUT/cgal-data"
+  fi
+  mkdir -p "$BENCH_OUT/thb"
+  echo
+  for method in shape bidgcn; do
+    "$build/tests/holefill_bench_thb" "$BENCH_OUT/cgal-data/meshes/bunny00.off" "$BENCH_OUT/thb" "$method" | tee "$BENCH_OUT/bench_thb_$method.md"
+    /usr/bin/python3 tests/bench/thb_pictures.py "$BENCH_OUT/thb" >/dev/null && mv "$BENCH_OUT/thb/thb_bunny.png" "$BENCH_OUT/thb/thb_bunny_$method.png"
+    echo
+  done
+}
+if [ "${BENCH_ONLY:-}" = thb ]; then  # BENCH_ONLY=thb runs part 7 alone
+  bench_thb
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = cloud-params ]; then  # BENCH_ONLY=cloud-params runs part 6 alone
   bench_cloud_params
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
@@ -90,4 +113,5 @@ echo
 "$build/tests/holefill_bench_gnurbs" 4 | tee "$BENCH_OUT/bench_gnurbs.md"
 bench_fitting
 bench_cloud_params
+bench_thb
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

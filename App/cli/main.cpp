@@ -24,6 +24,7 @@
 #include "brep/shape_io.h"
 #include "fill/hole_fill.h"
 #include "geometry/text_file.h"
+#include "fitting/cloud_boundary.h"
 #include "fitting/cloud_parameterization.h"
 #include "fitting/labeled_fit.h"
 #include "fitting/thb_fit.h"
@@ -74,7 +75,8 @@ const char* kUsage =
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
     "                [--weights W.pt] [--json]\n"
     "                meshless parameterization of a point cloud; CLOUD.txt lines 'x y z flag u v' (flag 1: boundary point\n"
-    "                with its u v; 0: interior); boundary points without u v get chord length between four corners\n"
+    "                with its u v; 0: interior), or bare 'x y z' lines (the boundary is found: alpha shape in the best plane);\n"
+    "                boundary points without u v get chord length between four corners\n"
     "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud;\n"
     "                bidgcn: the learned parameterizer (shipped weights unless --weights)\n"
     "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--param shape|invdist|uniform|bidgcn] [--thb] [--tolerance T]\n"
@@ -440,6 +442,17 @@ int cmdFit(const Args& a) {
   return r.parameterization.flippedTriangles > 0 || !r.fit.valid ? 3 : 0;
 }
 
+// A point-cloud file; bare x y z lines get their boundary found (reported on stderr).
+FlaggedCloud readCloud(const std::string& path) {
+  FlaggedCloud c = parseFlaggedCloud(readFileBytes(path, std::size_t(1) << 30), path);
+  if (!c.flagsGiven) {
+    const CloudBoundary b = detectCloudBoundary(c.points);
+    c.boundary = b.boundary;
+    std::fprintf(stderr, "no boundary flags: found %d boundary points (alpha shape, spacing %.3g)\n", b.count, b.spacing);
+  }
+  return c;
+}
+
 // Exit 0 when written (with warnings on stderr).
 int cmdParam(const Args& a) {
   if (a.input.empty()) throw Error("param: no point cloud given (lines x y z flag u v)");
@@ -448,7 +461,7 @@ int cmdParam(const Args& a) {
   o.weights = cloudWeightsByName(a.get("--method", "shape"));
   if (a.has("--radius")) o.radius = number(a.get("--radius"), "--radius");
   o.weightsFile = a.get("--weights", "");
-  FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
+  FlaggedCloud c = readCloud(a.input);
   if (!c.boundaryUVGiven || a.has("--corners")) {
     std::vector<int> corners;
     if (a.has("--corners")) {
@@ -490,19 +503,13 @@ int cmdFitPoints(const Args& a) {
   if (!a.has("--thb")) fo.maxLevels = 1;  // one uniform level: plain least squares with parameter correction
   if (fo.degree < 1 || fo.degree > 7) throw Error("--degree must be 1 to 7");
   if (!(fo.tolerance > 0)) throw Error("--tolerance must be positive");
-  FlaggedCloud c = parseFlaggedCloud(readFileBytes(a.input, std::size_t(1) << 30), a.input);
+  FlaggedCloud c = readCloud(a.input);
   if (!c.boundaryUVGiven) c.uv = boundaryChordParameters(c.points, c.boundary);
   const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, po);
   const ThbFitResult r = fitThb(c.points, p.uv, fo);
   writeShape(BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face(), a.get("--out"));
   if (a.has("--json")) {
-    JsonWriter j;
-    j.beginObject().key("iterations").beginArray();
-    for (const auto& h : r.history)
-      j.beginObject().field("dof", h.dof).field("mse", h.mse).field("max_error", h.maxError).field("refined_cells", h.refinedCells)
-          .field("corrected_parameters", h.correctedParameters).endObject();
-    j.endArray().field("levels", r.space.levels()).field("met_tolerance", r.metTolerance).endObject();
-    std::cout << "{\"parameterization\":" << p.toJson() << "," << j.str().substr(1) << "\n";
+    std::cout << "{\"parameterization\":" << p.toJson() << "," << r.toJson().substr(1) << "\n";
   } else {
     for (const auto& h : r.history)
       std::printf("%5d functions: mse %.2e, max error %.2e of the diagonal; %d cells refined, %d parameters corrected\n", h.dof, h.mse, h.maxError,

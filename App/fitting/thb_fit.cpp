@@ -8,6 +8,7 @@
 #include "fill/fairness_energy.h"
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
+#include "geometry/json_writer.h"
 #include "geometry/surface_projection.h"
 
 namespace holefill {
@@ -31,6 +32,16 @@ Eigen::SparseMatrix<double> finestMap(const ThbSpace& s, std::vector<double>& Uu
 
 }  // namespace
 
+std::string ThbFitResult::toJson() const {
+  JsonWriter j;
+  j.beginObject().key("iterations").beginArray();
+  for (const auto& h : history)
+    j.beginObject().field("dof", h.dof).field("mse", h.mse).field("max_error", h.maxError).field("refined_cells", h.refinedCells)
+        .field("corrected_parameters", h.correctedParameters).endObject();
+  j.endArray().field("levels", space.levels()).field("met_tolerance", metTolerance).endObject();
+  return j.str();
+}
+
 ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0, const ThbFitOptions& o) {
   const Eigen::Index n = points.rows();
   if (uv0.rows() != n) throw Error("the parameters do not match the points in number");
@@ -41,6 +52,7 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
   if (n < static_cast<Eigen::Index>(r.space.functions().size()))
     throw Error("the cloud has " + std::to_string(n) + " points, fewer than the " + std::to_string(r.space.functions().size()) + " functions of the base space");
   const double diagonal = std::max(1e-300, (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm());
+  r.diagonal = diagonal;
   r.uv = uv0.cwiseMax(0.0).cwiseMin(1.0);
   for (int it = 0;; ++it) {
     ThbSpace& s = r.space;
@@ -85,6 +97,7 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
       }
     }
     r.metTolerance = h.maxError <= o.tolerance;
+    r.errors = err;
     if (r.metTolerance || it + 1 >= o.maxIterations) {
       r.history.push_back(h);
       break;

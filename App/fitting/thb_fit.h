@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <string>
 #include <vector>
 
 #include "fitting/thb_spline.h"
@@ -40,6 +41,9 @@ struct ThbFitResult {
   Eigen::MatrixX2d uv;            // the corrected parameters
   std::vector<ThbFitIteration> history;
   bool metTolerance = false;
+  Eigen::VectorXd errors;         // per point, at the corrected parameters, relative to the diagonal
+  double diagonal = 0;            // of the cloud's bounding box (model units)
+  std::string toJson() const;     // iterations (dof, mse, max error, refined cells, corrected parameters), levels, met_tolerance
 };
 
 // `uv` in [0, 1]² per point. Throws Error for fewer points than the base space has functions,

@@ -16,6 +16,15 @@ ThbSpace::ThbSpace(int degree, int cellsU, int cellsV) : p_(degree), nu_(cellsU)
 
 std::vector<double> ThbSpace::knots(int level, int dir) const { return clampedUniformKnots(p_, dir == 0 ? cellsU(level) : cellsV(level), 0, 1); }
 
+std::vector<std::array<int, 3>> ThbSpace::leafCells() const {
+  std::vector<std::array<int, 3>> out;
+  for (int l = 0; l < levels(); ++l)
+    for (int i = 0; i < cellsU(l); ++i)
+      for (int j = 0; j < cellsV(l); ++j)
+        if (inDomain(l, i, j) && !(l + 1 < levels() && inDomain(l + 1, 2 * i, 2 * j))) out.push_back({l, i, j});
+  return out;
+}
+
 bool ThbSpace::inDomain(int level, int i, int j) const {
   if (level < 0 || level >= levels() || i < 0 || j < 0 || i >= cellsU(level) || j >= cellsV(level)) return false;
   return domain_[level][static_cast<size_t>(j) * cellsU(level) + i] != 0;

@@ -38,6 +38,8 @@ class ThbSpace {
   int cellsV(int level) const { return nv_ << level; }
   bool inDomain(int level, int i, int j) const;  // cell (i, j) of `level` lies in Ω^level
   const std::vector<Function>& functions() const { return basis_; }
+  // The hierarchical mesh: cells of Ω^ℓ \ Ω^{ℓ+1} of every level, as (level, i, j).
+  std::vector<std::array<int, 3>> leafCells() const;
 
   // Values of all active functions at (u, v) in [0, 1]², as (function index, value) pairs.
   std::vector<std::pair<int, double>> evaluate(double u, double v) const;

@@ -28,7 +28,7 @@ Eigen::MatrixX2d bidgcnParameters(const Eigen::MatrixX3d& p, const std::vector<b
   }
   char err[512] = {0};
   if (lib.bidgcnPredict(weights.c_str(), xyz.data(), flags.data(), n, o.threads, uv.data(), err, sizeof err))
-    throw Error(std::string("BIDGCN: ") + err);
+    throw Error(std::string(err).find("BIDGCN") == std::string::npos ? std::string("BIDGCN: ") + err : std::string(err));
   Eigen::MatrixX2d out(n, 2);
   for (int k = 0; k < n; ++k) {
     if (boundary[k]) {

@@ -23,6 +23,8 @@
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "fitting/cloud_parameterization.h"
+#include "fitting/thb_fit.h"
+#include "fitting/cloud_boundary.h"
 #include "fitting/labeled_fit.h"
 #include "gnurbs/cage_io.h"
 #include "gnurbs/gnurbs_brep.h"
@@ -421,11 +423,12 @@ PYBIND11_MODULE(HoleFillApp, m) {
      "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
   m.def("parameterizeCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
-                                const std::string& method, double radius) {
+                                const std::string& method, double radius, const std::string& weights) {
     return guarded([&] {
       CloudParameterizationOptions o;
       o.weights = cloudWeightsByName(method);
       o.radius = radius;
+      o.weightsFile = weights;
       CloudParameterization p;
       {
         py::gil_scoped_release release;
@@ -434,7 +437,58 @@ PYBIND11_MODULE(HoleFillApp, m) {
       return py::make_tuple(p.uv, p.toJson());
     });
   }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("method") = "shape", py::arg("radius") = 0.0,
-     "Meshless parameterization of a point cloud with fixed boundary parameters: (uv per point, report JSON).");
+     py::arg("weights") = "", "Meshless or learned (bidgcn) parameterization of a point cloud with fixed boundary parameters: (uv per point, report JSON).");
+  m.def("fitPointCloud", [](const Eigen::MatrixX3d& points, std::vector<bool> boundary, Eigen::MatrixX2d boundaryUV, bool uvGiven,
+                            const std::vector<int>& corners, const std::string& method, double radius, const std::string& weights, int degree,
+                            double tolerance, int cells, int iterations, bool thb) {
+    return guarded([&] {
+      CloudParameterizationOptions po;
+      po.weights = cloudWeightsByName(method);
+      po.radius = radius;
+      po.weightsFile = weights;
+      ThbFitOptions fo;
+      fo.degree = degree;
+      fo.tolerance = tolerance;
+      fo.baseCells = cells;
+      fo.maxIterations = iterations;
+      if (!thb) fo.maxLevels = 1;
+      if (degree < 1 || degree > 7) throw Error("the degree must be 1 to 7");
+      if (!(tolerance > 0)) throw Error("the tolerance must be positive");
+      int found = -1;
+      CloudParameterization p;
+      ThbFitResult r;
+      TopoDS_Face face;
+      {
+        py::gil_scoped_release release;
+        if (boundary.empty()) {
+          const CloudBoundary b = detectCloudBoundary(points);
+          boundary = b.boundary;
+          found = b.count;
+        }
+        if (!uvGiven) boundaryUV = boundaryChordParameters(points, boundary, corners);
+        p = parameterizeCloud(points, boundary, boundaryUV, po);
+        r = fitThb(points, p.uv, fo);
+        face = BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face();
+      }
+      std::string json = "{\"parameterization\":" + p.toJson() + ",\"boundary_found\":" + std::to_string(found) + "," +
+                         r.toJson().substr(1);
+      // The hierarchical mesh as parameter rectangles (level, u0, v0, u1, v1).
+      const auto leaves = r.space.leafCells();
+      Eigen::MatrixXd rects(leaves.size(), 5);
+      for (size_t k = 0; k < leaves.size(); ++k) {
+        const auto [l, i, j] = leaves[k];
+        const double du = 1.0 / r.space.cellsU(l), dv = 1.0 / r.space.cellsV(l);
+        rects.row(k) << l, i * du, j * dv, (i + 1) * du, (j + 1) * dv;
+      }
+      Eigen::Matrix<bool, Eigen::Dynamic, 1> flags(boundary.size());
+      for (size_t k = 0; k < boundary.size(); ++k) flags[k] = boundary[k];
+      return py::make_tuple(py::bytes(shapeToBrepString(face)), json, r.uv, Eigen::VectorXd(r.errors * r.diagonal), rects, flags);
+    });
+  }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("uvGiven"), py::arg("corners"), py::arg("method") = "shape",
+     py::arg("radius") = 0.0, py::arg("weights") = "", py::arg("degree") = 3, py::arg("tolerance") = 1e-3, py::arg("cells") = 4,
+     py::arg("iterations") = 8, py::arg("thb") = true,
+     "Point-cloud fit: boundary (found when `boundary` is empty), parameters, adaptive THB fit with parameter correction: "
+     "(face BREP, report JSON, uv per point, error per point in model units, leaf cells [level, u0, v0, u1, v1], boundary flags).");
   m.def("sampleCageNames", &cages::sampleCageNames);
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
         py::arg("name"), "OBJ text of a bundled sample cage.");

@@ -2,7 +2,9 @@
 # holefill fit-points: a cloud from a smooth sheet with a bump, its frame carrying parameters, is
 # fitted adaptively (--thb) to the tolerance with fewer functions than the uniform finest level
 # would need, and the error falls every iteration; one uniform level does not meet it (exit 3);
-# the BIDGCN method, a bad degree and a broken cloud are refused, nothing written.
+# the same cloud as bare x y z lines gets its boundary found and is fitted too; BIDGCN (the shipped
+# weights) parameterizes it for the fit; missing weights, a bad degree and a broken cloud are
+# refused, nothing written.
 . "$(dirname "$0")/checks.sh"
 "$PY" - "$T" <<'PY'
 import math, random, sys
@@ -18,6 +20,9 @@ with open(t + "/cloud.txt", "w") as f:
     for k in range(1500):
         f.write("%r %r %r 0\n" % S(random.uniform(.02, .98), random.uniform(.02, .98)))
 open(t + "/broken.txt", "w").write("1 2 3 1 0\n")
+with open(t + "/bare.txt", "w") as f:
+    for line in open(t + "/cloud.txt"):
+        f.write(" ".join(line.split()[:3]) + "\n")
 PY
 if "$H" fit-points "$T/cloud.txt" --thb --tolerance 1e-3 --out "$T/thb.brep" --json >"$T/thb.json" 2>"$T/err"; then ok "adaptive THB fit written (exit 0)"; else bad "thb: $(cat "$T/err")"; fi
 "$PY" - "$T" <<'PY' && ok "tolerance met, error falling, fewer functions than the uniform finest level" || bad "thb report: $(cat "$T/thb.json")"
@@ -33,7 +38,11 @@ PY
 [ -s "$T/thb.brep" ] && ok "surface written" || bad "no surface"
 "$H" fit-points "$T/cloud.txt" --tolerance 1e-3 --out "$T/uniform.brep" >/dev/null 2>&1; rc=$?
 [ "$rc" = 3 ] && [ -s "$T/uniform.brep" ] && ok "one uniform level: written, tolerance not met (exit 3)" || bad "uniform level: rc=$rc"
-expect_refusal "bidgcn not built" "not built yet" "$T/o.brep" fit-points "$T/cloud.txt" --param bidgcn --out "$T/o.brep"
+if "$H" fit-points "$T/bare.txt" --thb --tolerance 1e-3 --out "$T/bare.brep" --json >"$T/bare.json" 2>"$T/err"; then ok "bare x y z cloud fitted (exit 0)"; else bad "bare: $(cat "$T/err")"; fi
+grep -q "found 4[0-9] boundary points" "$T/err" && ok "its boundary found: $(grep -o 'found [0-9]* boundary points' "$T/err")" || bad "boundary: $(cat "$T/err")"
+if "$H" fit-points "$T/cloud.txt" --param bidgcn --thb --tolerance 1e-3 --out "$T/bidgcn.brep" --json >"$T/bidgcn.json" 2>"$T/err"; then ok "BIDGCN parameters, THB fit to the tolerance (exit 0)"; else bad "bidgcn: $(cat "$T/err")"; fi
+"$PY" -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['parameterization']['method']=='bidgcn' and r['met_tolerance'], r" "$T/bidgcn.json" && ok "report names bidgcn" || bad "bidgcn report: $(cat "$T/bidgcn.json")"
+expect_refusal "missing BIDGCN weights" "weights not found" "$T/o.brep" fit-points "$T/cloud.txt" --param bidgcn --weights "$T/none.pt" --out "$T/o.brep"
 expect_refusal "bad degree" "degree" "$T/o.brep" fit-points "$T/cloud.txt" --degree 0 --out "$T/o.brep"
-expect_refusal "broken cloud" "expected x y z flag" "$T/o.brep" fit-points "$T/broken.txt" --out "$T/o.brep"
+expect_refusal "broken cloud" "got 5 columns" "$T/o.brep" fit-points "$T/broken.txt" --out "$T/o.brep"
 finish

@@ -22,7 +22,7 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 struct Cloud {
-  torch::Tensor interior, boundary, boundaryUV;  // [nI, 3], [nB, 3], [nB, 2]
+  torch::Tensor interior, boundary, boundaryUV, interiorUV;  // [nI, 3], [nB, 3], [nB, 2], exact [nI, 2]
   PatchCloud cloud;
 };
 using Batch = std::vector<Cloud>;
@@ -46,6 +46,8 @@ Batch makeBatch(PatchCloudSplit split, uint64_t first, int count, int interior, 
     c.boundary = torch::from_blob((void*)p.data(), {boundary, 3}).clone();
     c.interior = torch::from_blob((void*)(p.data() + 3 * boundary), {interior, 3}).clone();
     c.boundaryUV = torch::from_blob((void*)uv.data(), {boundary, 2}).clone();
+    const Eigen::Matrix<float, Eigen::Dynamic, 2, Eigen::RowMajor> exact = c.cloud.uv.bottomRows(interior).cast<float>();
+    c.interiorUV = torch::from_blob((void*)exact.data(), {interior, 2}).clone();
     batch.push_back(std::move(c));
   }
   return batch;
@@ -145,8 +147,12 @@ int trainBidgcn(const BidgcnTrainOptions& o) {
     if (step + 1 < o.steps) next = batchAt(step + 1);
     for (auto& g : opt.param_groups()) static_cast<torch::optim::AdamOptions&>(g.options()).lr(learningRate(o, step));
     torch::Tensor loss = torch::zeros({}, torch::kDouble);
-    for (const Cloud& c : b)
-      loss = loss + bezierFitLoss(net->forward(c.interior, c.boundary, c.boundaryUV), c.interior, c.boundary, c.boundaryUV) / double(b.size());
+    for (const Cloud& c : b) {
+      const torch::Tensor uv = net->forward(c.interior, c.boundary, c.boundaryUV);
+      torch::Tensor l = bezierFitLoss(uv, c.interior, c.boundary, c.boundaryUV);
+      if (o.supervision > 0) l = l + o.supervision * (uv - c.interiorUV).pow(2).sum(-1).mean().to(torch::kDouble);
+      loss = loss + l / double(b.size());
+    }
     opt.zero_grad();
     loss.backward();
     torch::nn::utils::clip_grad_norm_(net->parameters(), 1.0);
@@ -175,8 +181,10 @@ int trainBidgcn(const BidgcnTrainOptions& o) {
   }
   const double hours = (wallBefore + since(t0)) / 3600;
   char card[512];
-  std::snprintf(card, sizeof card, "BIDGCN radius %.3g, %d neighbours max; %d steps of %d clouds (%d+%d points, noise <= %g); %.2f h on %d threads",
-                net->config.radius, net->config.maxNeighbours, o.steps, o.batch, o.interior, o.boundary, o.noise, hours, o.threads);
+  std::snprintf(card, sizeof card, "BIDGCN radius %.3g, %d neighbours max; %d steps of %d clouds (%d+%d points, noise <= %g), "
+                "supervision %g, lr %g; %.2f h on %d threads",
+                net->config.radius, net->config.maxNeighbours, o.steps, o.batch, o.interior, o.boundary, o.noise, o.supervision,
+                o.learningRate, hours, o.threads);
   saveBidgcn(net, o.outDir + "/bidgcn.pt", card);
   std::printf("[bidgcn] done: %s/bidgcn.pt\n", o.outDir.c_str());
   return 0;

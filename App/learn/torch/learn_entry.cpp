@@ -114,7 +114,7 @@ int trainMain(int argc, char** argv) {
 }
 
 int trainBidgcnMain(int argc, char** argv) {
-  const Args a = parse(argc, argv, 2, {"out", "steps", "batch", "interior", "noise", "lr", "threads", "validate-every",
+  const Args a = parse(argc, argv, 2, {"out", "steps", "batch", "interior", "noise", "lr", "supervision", "threads", "validate-every",
                                        "validation-clouds", "checkpoint-minutes", "max-hours", "seed"});
   BidgcnTrainOptions o;
   o.outDir = a.get("out", "bidgcn-run");
@@ -123,6 +123,7 @@ int trainBidgcnMain(int argc, char** argv) {
   o.interior = std::stoi(a.get("interior", std::to_string(o.interior)));
   o.noise = std::stod(a.get("noise", "0"));
   o.learningRate = std::stod(a.get("lr", std::to_string(o.learningRate)));
+  o.supervision = std::stod(a.get("supervision", std::to_string(o.supervision)));
   o.threads = std::stoi(a.get("threads", std::to_string(o.threads)));
   o.validateEvery = std::stoi(a.get("validate-every", std::to_string(o.validateEvery)));
   o.validationClouds = std::stoi(a.get("validation-clouds", std::to_string(o.validationClouds)));

@@ -1,20 +1,26 @@
-"""Point-cloud parameterization (bidgcn paper, sec. 3.2): (u, v) for every point of a scanned
-cloud whose boundary points have known parameters, by convex combinations of neighbours within a
-radius: shape-preserving (Floater; the default), inverse-distance or uniform weights.
+"""Point clouds (bidgcn paper): parameterization and adaptive spline fitting.
+
+`parameterize` gives (u, v) for every point of a scanned cloud whose boundary points have known
+parameters: by convex combinations of neighbours within a radius — shape-preserving (Floater;
+the default), inverse-distance or uniform weights (sec. 3.2) — or by the learned BIDGCN network
+(sec. 4, method="bidgcn"). `fitPoints` fits a THB-spline surface to a cloud (sec. 5): boundary
+found when not given, parameters as above, adaptive refinement and parameter correction until
+the largest point error is within the tolerance.
 
     import HoleFill
     uv, report = HoleFill.parameterize(points, {0: (0, 0), 1: (0.1, 0), ...}, method="shape")
-    print(report["radius"], report["min_neighbours"], report["max_neighbours"])
+    face, report = HoleFill.fitPoints(doc.Points.Points, method="bidgcn", tolerance=0.05)
+    print(report["iterations"][-1]["dof"], max(report["errors"]))
 
 `points`: FreeCAD vectors, (x, y, z) tuples, a Points.Points or Mesh.Mesh (its vertices), or an
-N×3 array; `boundary`: {point index: (u, v)} for the boundary points (at least 3). The radius is
-in the cloud scaled into the unit cube (0: 3/sqrt(N)). Errors raise HoleFillError.
+N×3 array. The radius is in the cloud scaled into the unit cube (0: 3/sqrt(N)); tolerances are in
+model units. Errors raise HoleFillError.
 """
 import json
 
 import HoleFillApp
 
-__all__ = ["parameterize"]
+__all__ = ["parameterize", "fitPoints", "makePointCloudFit"]
 
 
 def _points(points):
@@ -29,8 +35,10 @@ def _points(points):
     return np.array(out, dtype=float).reshape(-1, 3)
 
 
-def parameterize(points, boundary, method="shape", radius=0.0):
-    """(uv, report): an N×2 array of parameters (boundary points keep theirs) and a dict."""
+def parameterize(points, boundary, method="shape", radius=0.0, weights=""):
+    """(uv, report): an N×2 array of parameters (boundary points keep theirs) and a dict.
+    `boundary`: {point index: (u, v)} for the boundary points (at least 3); `weights`: a BIDGCN
+    weights file (empty: the shipped one)."""
     import numpy as np
     p = _points(points)
     flags = [False] * len(p)
@@ -41,5 +49,126 @@ def parameterize(points, boundary, method="shape", radius=0.0):
             raise HoleFillApp.HoleFillError("boundary index %d is not a point of the cloud (0..%d)" % (k, len(p) - 1))
         flags[k] = True
         buv[k] = (float(uv[0]), float(uv[1]))
-    uv, report = HoleFillApp.parameterizeCloud(p, flags, buv, str(method), float(radius))
+    uv, report = HoleFillApp.parameterizeCloud(p, flags, buv, str(method), float(radius), str(weights))
     return uv, json.loads(report)
+
+
+def fitPoints(points, boundary=None, method="shape", tolerance=None, degree=3, thb=True, cells=4, iterations=8,
+              corners=None, radius=0.0, weights=""):
+    """(face, report): a Part.Face of the fitted B-spline (exact at the finest level) and a dict
+    with the parameterization's report, per-iteration degrees of freedom, MSE and max error
+    (relative to the diagonal), `levels`, `met_tolerance`, `uv` and `errors` per point (model
+    units), `cells` (the hierarchical mesh: (level, u0, v0, u1, v1) rows) and `boundary` (the
+    boundary point indices used).
+
+    `boundary`: None — a Mesh's outer boundary loop, else found (alpha shape); a list of point
+    indices (their parameters by chord length between `corners`, four indices, or the four
+    sharpest turns); or {index: (u, v)}. `tolerance`: the largest point distance wanted, in model
+    units (None: 1e-3 of the bounding-box diagonal). `thb=False` fits one uniform level."""
+    import numpy as np
+    import Part
+    mesh = points if hasattr(points, "Topology") else None
+    p = _points(points)
+    n = len(p)
+    flags, buv, given = [], np.zeros((n, 2)), False
+    if boundary is None and mesh is not None:
+        from HoleFill.labeled import boundaryLoop
+        boundary = boundaryLoop(mesh)[0]
+    if boundary is not None:
+        flags = [False] * n
+        items = dict(boundary).items() if isinstance(boundary, dict) else [(k, None) for k in boundary]
+        for k, uv in items:
+            k = int(k)
+            if not 0 <= k < n:
+                raise HoleFillApp.HoleFillError("boundary index %d is not a point of the cloud (0..%d)" % (k, n - 1))
+            flags[k] = True
+            if uv is not None:
+                buv[k] = (float(uv[0]), float(uv[1]))
+        given = isinstance(boundary, dict)
+    diagonal = float(np.linalg.norm(p.max(axis=0) - p.min(axis=0))) if n else 0.0
+    relative = 1e-3 if tolerance is None else float(tolerance) / max(diagonal, 1e-300)
+    brep, report, uv, errors, rects, used = HoleFillApp.fitPointCloud(
+        p, flags, buv, given, [int(c) for c in (corners or [])], str(method), float(radius), str(weights), int(degree),
+        relative, int(cells), int(iterations), bool(thb))
+    shape = Part.Shape()
+    shape.importBrepFromString(brep.decode() if isinstance(brep, bytes) else brep)
+    r = json.loads(report)
+    r.update(uv=uv, errors=errors, cells=rects, boundary=[k for k in range(n) if used[k]], diagonal=diagonal,
+             tolerance=relative * diagonal)
+    return shape.Faces[0], r
+
+
+def _sourcePoints(obj):
+    """The cloud of a Points object or the Mesh of a Mesh object (placement applied)."""
+    if hasattr(obj, "Points") and hasattr(obj.Points, "Points"):
+        pts = obj.Points.copy()
+        pts.Placement = obj.Placement
+        return [p for p in pts.Points]
+    if hasattr(obj, "Mesh"):
+        m = obj.Mesh.copy()
+        m.Placement = obj.Placement
+        return m
+    raise HoleFillApp.HoleFillError("%s is neither a Points nor a Mesh object" % getattr(obj, "Label", obj))
+
+
+class PointCloudFitFeature:
+    """A B-spline face fitted to a Points or Mesh object (fitPoints); recomputes when the source
+    or the options change. Report holds the fit's numbers (JSON)."""
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setupProperties(obj)
+
+    def setupProperties(self, obj):
+        from functools import partial
+        from HoleFill.transaction import ensureProperty
+        add = partial(ensureProperty, obj)
+        add("App::PropertyLink", "Source", "Fit", "The Points or Mesh object fitted")
+        if "Method" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyEnumeration", "Method", "Fit", "Parameterization: bidgcn, shape, invdist or uniform")
+            obj.Method = ["bidgcn", "shape", "invdist", "uniform"]
+        add("App::PropertyLength", "Tolerance", "Fit", "Largest point distance wanted (0: 1e-3 of the diagonal)", 0.0)
+        add("App::PropertyIntegerConstraint", "Degree", "Fit", "Spline degree", (3, 1, 7, 1))
+        add("App::PropertyBool", "Adaptive", "Fit", "Refine adaptively (THB-splines); off: one uniform level", True)
+        add("App::PropertyIntegerConstraint", "Iterations", "Fit", "Refinement iterations at most", (8, 1, 30, 1))
+        add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
+        obj.setEditorMode("Report", 1)
+
+    def onDocumentRestored(self, obj):
+        self.setupProperties(obj)
+
+    def execute(self, obj):
+        if obj.Source is None:
+            raise HoleFillApp.HoleFillError("the point-cloud fit has no source")
+        tol = float(obj.Tolerance) if float(obj.Tolerance) > 0 else None
+        face, rep = fitPoints(_sourcePoints(obj.Source), method=obj.Method, tolerance=tol, degree=obj.Degree, thb=obj.Adaptive,
+                              iterations=obj.Iterations)
+        obj.Shape = face
+        obj.Report = json.dumps({k: v for k, v in rep.items() if k not in ("uv", "errors", "cells", "boundary")})
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def makePointCloudFit(source, method="bidgcn", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit"):
+    """A parametric fit of a Points or Mesh object in one undo step (tolerance in model units,
+    0: 1e-3 of the diagonal)."""
+    import FreeCAD
+    _sourcePoints(source)  # refuse other objects before touching the document
+
+    def setup(obj):
+        PointCloudFitFeature(obj)
+        obj.Source = source
+        obj.Method = str(method)
+        obj.Tolerance = float(tolerance)
+        obj.Degree = int(degree)
+        obj.Adaptive = bool(thb)
+        obj.Iterations = int(iterations)
+        if FreeCAD.GuiUp:
+            obj.ViewObject.Proxy = 0
+
+    from HoleFill.transaction import addParametric
+    return addParametric(source.Document, "Fit point cloud", name, setup, "the point-cloud fit")
