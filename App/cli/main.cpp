@@ -22,6 +22,7 @@
 #include "brep/hole_detection.h"
 #include "brep/sample_models.h"
 #include "brep/shape_io.h"
+#include "brep/thb_faces.h"
 #include "fill/hole_fill.h"
 #include "geometry/text_file.h"
 #include "fitting/cloud_boundary.h"
@@ -80,8 +81,9 @@ const char* kUsage =
     "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud;\n"
     "                bidgcn: the learned parameterizer (shipped weights unless --weights)\n"
     "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--param shape|invdist|uniform|bidgcn] [--thb] [--tolerance T]\n"
-    "                [--degree 3] [--cells 4] [--iterations 8] [--weights W.pt] [--json]   spline fit of a point cloud (as for param) with\n"
-    "                parameter correction; --thb refines adaptively (THB-splines) until the max error <= T (of the diagonal)\n"
+    "                [--degree 3] [--cells 4] [--iterations 8] [--weights W.pt] [--faces] [--json]   spline fit of a point cloud\n"
+    "                (as for param) with parameter correction; --thb refines adaptively (THB-splines) until the max error <= T\n"
+    "                (of the diagonal); OUT holds the finest-level B-spline face, or with --faces one face per hierarchical cell\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
     "                labeled_region.obj with its labeled_region.labels.json)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
@@ -100,7 +102,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb"};  // --no-refine: mesh-fill and gnurbs
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -507,7 +509,8 @@ int cmdFitPoints(const Args& a) {
   if (!c.boundaryUVGiven) c.uv = boundaryChordParameters(c.points, c.boundary);
   const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, po);
   const ThbFitResult r = fitThb(c.points, p.uv, fo);
-  writeShape(BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face(), a.get("--out"));
+  writeShape(a.has("--faces") ? thbCellFaces(r.space, r.surface) : TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face()),
+             a.get("--out"));
   if (a.has("--json")) {
     std::cout << "{\"parameterization\":" << p.toJson() << "," << r.toJson().substr(1) << "\n";
   } else {

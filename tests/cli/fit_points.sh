@@ -36,6 +36,13 @@ assert r["levels"] > 1 and it[-1]["dof"] < finest, (r["levels"], it[-1]["dof"], 
 assert r["parameterization"]["method"] == "shape" and r["parameterization"]["points"] == 1548, r["parameterization"]
 PY
 [ -s "$T/thb.brep" ] && ok "surface written" || bad "no surface"
+"$H" fit-points "$T/cloud.txt" --thb --tolerance 1e-3 --faces --out "$T/faces.brep" >/dev/null 2>"$T/err" && ok "--faces written" || bad "faces: $(cat "$T/err")"
+"$PY" - "$T" <<'PY' && ok "--faces: one face per hierarchical cell, one shell" || bad "faces file"
+import sys
+t = open(sys.argv[1] + "/faces.brep").read()
+# BREP text: faces are 'Fa' records, shells 'Sh'
+assert t.count("\nFa") > 16 and t.count("\nSh") == 1, (t.count("\nFa"), t.count("\nSh"))
+PY
 "$H" fit-points "$T/cloud.txt" --tolerance 1e-3 --out "$T/uniform.brep" >/dev/null 2>&1; rc=$?
 [ "$rc" = 3 ] && [ -s "$T/uniform.brep" ] && ok "one uniform level: written, tolerance not met (exit 3)" || bad "uniform level: rc=$rc"
 if "$H" fit-points "$T/bare.txt" --thb --tolerance 1e-3 --out "$T/bare.brep" --json >"$T/bare.json" 2>"$T/err"; then ok "bare x y z cloud fitted (exit 0)"; else bad "bare: $(cat "$T/err")"; fi

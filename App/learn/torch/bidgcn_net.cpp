@@ -1,5 +1,6 @@
 #include "learn/torch/bidgcn_net.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -71,26 +72,31 @@ RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, doub
   const torch::Tensor d2 = torch::addmm(f.pow(2).sum(-1, true) + t.pow(2).sum(-1).unsqueeze(0), f, t.t(), 1, -2).contiguous();
   const int64_t n = f.size(0), m = t.size(0);
   const float r2 = float(r * r);
-  // Per row: the candidates within r, cut to the k nearest by a selection on the row's distances
-  // when there are more (a scan; a top-k over all m is several times slower).
+  // Per row: the k nearest within r, kept in a max-heap while scanning the row's distances (once
+  // the heap is full almost every candidate is rejected by one comparison; a top-k over all m, or
+  // selecting among all candidates, is several times slower on the dense feature-space graphs).
   std::vector<std::vector<int64_t>> rows(n);
   const float* D = d2.data_ptr<float>();
   at::parallel_for(0, n, 128, [&](int64_t a, int64_t b) {
-    std::vector<float> within;
+    std::vector<std::pair<float, int64_t>> heap;
     for (int64_t i = a; i < b; ++i) {
       const float* d = D + i * m;
-      within.clear();
-      for (int64_t j = 0; j < m; ++j)
-        if (d[j] <= r2) within.push_back(d[j]);
-      float cut = r2;
-      if (int64_t(within.size()) > k) {
-        std::nth_element(within.begin(), within.begin() + (k - 1), within.end());
-        cut = within[k - 1];
+      heap.clear();
+      for (int64_t j = 0; j < m; ++j) {
+        if (d[j] > r2) continue;
+        if (int64_t(heap.size()) < k) {
+          heap.emplace_back(d[j], j);
+          std::push_heap(heap.begin(), heap.end());
+        } else if (d[j] < heap.front().first) {
+          std::pop_heap(heap.begin(), heap.end());
+          heap.back() = {d[j], j};
+          std::push_heap(heap.begin(), heap.end());
+        }
       }
       auto& c = rows[i];
-      c.reserve(std::min<int64_t>(k, within.size()));
-      for (int64_t j = 0; j < m && int64_t(c.size()) < k; ++j)
-        if (d[j] <= cut) c.push_back(j);
+      c.resize(heap.size());
+      for (size_t q = 0; q < heap.size(); ++q) c[q] = heap[q].second;
+      std::sort(c.begin(), c.end());
     }
   });
   int64_t E = 0;

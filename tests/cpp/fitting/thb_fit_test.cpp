@@ -3,7 +3,14 @@
 #include <cmath>
 #include <random>
 
+#include "brep/thb_faces.h"
 #include "fitting/thb_fit.h"
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Face.hxx>
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
 
@@ -77,6 +84,20 @@ TEST(ThbFit, RefinesWhereTheErrorIsAndRefusesBadInput) {
   EXPECT_GT(r.space.levels(), 1);
   EXPECT_LT(r.history.back().dof, 0.6 * uniformFinest);  // measured 655 of 1225
   EXPECT_LT(r.history.back().maxError, r.history.front().maxError);
+  // The errors reported per point are those of the last iteration, the leaf cells tile the square.
+  EXPECT_NEAR(r.errors.maxCoeff(), r.history.back().maxError, 1e-15);
+  double area = 0;
+  for (const auto& [l, i, j] : r.space.leafCells()) area += 1.0 / (r.space.cellsU(l) * r.space.cellsV(l));
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  // Exported as one face per cell: one shell, the same surface (area of the single face).
+  const TopoDS_Shape faces = thbCellFaces(r.space, r.surface);
+  int count = 0;
+  for (TopExp_Explorer e(faces, TopAbs_FACE); e.More(); e.Next()) ++count;
+  EXPECT_EQ(count, static_cast<int>(r.space.leafCells().size()));
+  GProp_GProps a, b;
+  BRepGProp::SurfaceProperties(faces, a, 1e-9);  // adaptive integration: the default order differs on small and large faces
+  BRepGProp::SurfaceProperties(BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face(), b, 1e-9);
+  EXPECT_NEAR(a.Mass(), b.Mass(), 1e-6 * b.Mass());
   Eigen::MatrixX2d bad = uv;
   bad(3, 0) = 1.5;
   EXPECT_THROW(fitThb(pts, bad, o), Error);
