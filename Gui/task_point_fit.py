@@ -1,5 +1,5 @@
 """Task panel of "Fit point cloud": for a Points or Mesh object, the parameterization method
-(BIDGCN or a classical one), the tolerance in model units, the degree and adaptive (THB) or
+(shape-preserving by default: its convex combinations cannot cross, BIDGCN's predictions can), the tolerance in model units, the degree and adaptive (THB) or
 uniform refinement, with a preview in the 3D view of the fitted surface (translucent), its
 hierarchical mesh (the THB leaf cells drawn on the surface, one colour per level) and the points
 coloured by their distance to the surface (blue: none, red: the tolerance or more). The status
@@ -51,7 +51,7 @@ class FitPanel:
         layout = QtWidgets.QFormLayout(self.form)
         self.method = QtWidgets.QComboBox()
         self.method.setObjectName("HoleFillPointFitMethod")
-        self.method.addItems(["bidgcn", "shape", "invdist", "uniform"])
+        self.method.addItems(["shape", "bidgcn", "invdist", "uniform"])
         self.method.setToolTip("bidgcn: the learned parameterizer; shape: shape-preserving (Floater); invdist, uniform: weights")
         layout.addRow("Parameterization:", self.method)
         self.tolerance = QtWidgets.QDoubleSpinBox()
@@ -111,7 +111,8 @@ class FitPanel:
         self.status.setText("%s parameters for %d points (%d on the boundary%s), %s after %d iterations, %d levels:\n%s" % (
             r["parameterization"]["method"], r["parameterization"]["points"], len(r["boundary"]),
             ", found" if r["boundary_found"] >= 0 else "", "tolerance met" if r["met_tolerance"] else "tolerance NOT met",
-            len(r["iterations"]), r["levels"], "\n".join(lines[-4:])))
+            len(r["iterations"]), r["levels"], "\n".join(lines[-4:])) + (
+            "\nwarning: the surface folds at %d of 4225 domain samples" % r["folds"] if r["folds"] else ""))
         self.draw()
 
     def draw(self):

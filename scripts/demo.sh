@@ -4,6 +4,8 @@
 # the filled models (.FCStd, .step), a continuity report per hole (.json + the printed
 # table) and a picture of each result (.png, rendered by FreeCAD under Xvfb); and G² G-NURBS
 # surfaces over the bundled quad cages in demo-out/gnurbs/ (.step, .faces.json, .json, zebra .png);
+# a THB fit of the bundled bare point cloud in demo-out/pointcloud/ (BIDGCN and shape-preserving
+# parameters; the fit also as one face per hierarchical cell, rendered);
 # a labeled fit of the bundled torus region in demo-out/labeled/ (with and without extension:
 # trimmed .step, untrimmed .brep, .json report, mean-curvature .png of the untrimmed surface).
 set -euo pipefail
@@ -43,6 +45,17 @@ for ext in G2 none; do
     --out "$out/labeled/untrimmed_$ext.png" --size 800x600 >/dev/null
   /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print("[demo] labeled fit, extension %-4s data max %.1e, %d weak control points, log10 condition %.1f, %d extension vertices, %.2f s" % (sys.argv[2], r["data_max"], r["weak_control_points"], r["log10_condition"], r["extended_vertices"], r["seconds"]))' "$out/labeled/fit_$ext.json" "$ext"
 done
+mkdir -p "$out/pointcloud"
+cp "$cages"/scan_patch.xyz "$out/pointcloud/"
+for param in bidgcn shape; do
+  "$build/App/holefill" fit-points "$out/pointcloud/scan_patch.xyz" --param $param --thb --tolerance 5e-4 \
+    --out "$out/pointcloud/scan_fit_$param.step" --json >"$out/pointcloud/scan_fit_$param.json" 2>/dev/null || true
+  /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); it=r["iterations"]; print("[demo] point cloud, %-6s parameters (%.3f s): %d levels, %d functions, max error %.1e of the diagonal, tolerance %s" % (sys.argv[2], r["parameterization"]["seconds"], r["levels"], it[-1]["dof"], it[-1]["max_error"], "met" if r["met_tolerance"] else "NOT met"))' "$out/pointcloud/scan_fit_$param.json" "$param"
+done
+"$build/App/holefill" fit-points "$out/pointcloud/scan_patch.xyz" --param bidgcn --thb --tolerance 5e-4 --faces \
+  --out "$out/pointcloud/scan_fit_cells.brep" >/dev/null 2>&1 || true
+"$build/App/holefill" render "$out/pointcloud/scan_fit_cells.brep" --mode curvature --quantity mean --view top \
+  --out "$out/pointcloud/scan_fit_cells.png" --size 800x600 >/dev/null
 rm -rf "$cages"
 echo "[demo] results in $out:"
 ls -1 "$out"

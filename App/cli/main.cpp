@@ -85,7 +85,7 @@ const char* kUsage =
     "                (as for param) with parameter correction; --thb refines adaptively (THB-splines) until the max error <= T\n"
     "                (of the diagonal); OUT holds the finest-level B-spline face, or with --faces one face per hierarchical cell\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
-    "                labeled_region.obj with its labeled_region.labels.json)\n"
+    "                labeled_region.obj with its labeled_region.labels.json, scan_patch.xyz: a bare point cloud)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
     "  holefill train bidgcn [--out DIR] [--steps N] [--batch B] [--noise S] [--lr L] [--threads T] [--max-hours H]\n"
@@ -520,6 +520,9 @@ int cmdFitPoints(const Args& a) {
     std::printf("%s after %zu iterations, %d levels; wrote %s\n", r.metTolerance ? "tolerance met" : "tolerance NOT met", r.history.size(),
                 r.space.levels(), a.get("--out").c_str());
   }
+  if (r.folds > 0)
+    std::fprintf(stderr, "warning: the surface folds at %d of 4225 domain samples (crowded or crossing parameters): "
+                         "try --param shape\n", r.folds);
   return r.metTolerance ? 0 : 3;
 }
 
@@ -538,6 +541,12 @@ int cmdSamples(const Args& a) {
   writeMesh(region, a.input + "/labeled_region.obj");
   writeFileAtomically(a.input + "/labeled_region.labels.json", labels + "\n");
   std::printf("%s/labeled_region.obj\n%s/labeled_region.labels.json\n", a.input.c_str(), a.input.c_str());
+  std::ostringstream cloud;
+  cloud.precision(10);
+  const Eigen::MatrixX3d scan = samples::scanPatchCloud();
+  for (Eigen::Index k = 0; k < scan.rows(); ++k) cloud << scan(k, 0) << ' ' << scan(k, 1) << ' ' << scan(k, 2) << '\n';
+  writeFileAtomically(a.input + "/scan_patch.xyz", cloud.str());
+  std::printf("%s/scan_patch.xyz\n", a.input.c_str());
   for (const auto& n : cages::sampleCageNames()) {
     const std::string path = a.input + "/" + n + ".obj";
     writeFileAtomically(path, formatCageObj(cages::sampleCage(n)));

@@ -38,7 +38,7 @@ std::string ThbFitResult::toJson() const {
   for (const auto& h : history)
     j.beginObject().field("dof", h.dof).field("mse", h.mse).field("max_error", h.maxError).field("refined_cells", h.refinedCells)
         .field("corrected_parameters", h.correctedParameters).endObject();
-  j.endArray().field("levels", space.levels()).field("met_tolerance", metTolerance).endObject();
+  j.endArray().field("levels", space.levels()).field("met_tolerance", metTolerance).field("folds", folds).endObject();
   return j.str();
 }
 
@@ -126,6 +126,17 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
     r.history.push_back(h);
     if (h.refinedCells == 0 && !o.correctParameters) break;  // nothing left to change
   }
+  // Folds: the normal on a grid against the points' best-fit plane normal.
+  const Eigen::MatrixX3d q = points.rowwise() - points.colwise().mean();
+  const Eigen::Vector3d planeNormal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(q.transpose() * q).eigenvectors().col(0);
+  int positive = 0, negative = 0;
+  for (int i = 0; i <= 64; ++i)
+    for (int j = 0; j <= 64; ++j) {
+      const auto d = r.surface.derivatives(i / 64.0, j / 64.0, 1);
+      const double s = d[1][0].cross(d[0][1]).dot(planeNormal);
+      (s > 0 ? positive : negative)++;
+    }
+  r.folds = std::min(positive, negative);  // the minority side: the orientation itself is arbitrary
   return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 #include <vector>
 
 namespace holefill::samples {
@@ -90,6 +91,19 @@ TriangleMesh scanWithHoles() {
     const bool slot = u.dot(c) > 0.96 || u.dot(d) > 0.96 || u.dot((c + d).normalized()) > 0.96;  // elongated
     return u.dot(a) > 0.9 || u.dot(b) > 0.97 || slot;
   }).mesh;
+}
+
+Eigen::MatrixX3d scanPatchCloud() {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> U(0, 40);
+  std::normal_distribution<double> noise(0, 0.005);
+  Eigen::MatrixX3d p(3000, 3);
+  for (int k = 0; k < 3000; ++k) {
+    const double x = U(rng), y = U(rng), u = x / 40, v = y / 40;
+    const double z = 40 * (0.15 * std::sin(2.5 * u) * std::cos(1.8 * v) + 0.06 * std::exp(-40 * ((u - .6) * (u - .6) + (v - .4) * (v - .4))));
+    p.row(k) << x + noise(rng), y + noise(rng), z + noise(rng);
+  }
+  return p;
 }
 
 TriangleMesh labeledRegion(std::string* labelsJson) {

@@ -28,6 +28,10 @@ TriangleMesh scanWithHoles();
 // the triangles are irregular; `labelsJson` receives its four labeled sides ({"segments": [...]}, 0-based).
 TriangleMesh labeledRegion(std::string* labelsJson = nullptr);
 
+// The bundled point-cloud demo: a scan-like cloud of a 40 × 40 bumpy sheet (a low wave and a
+// sharp bump), 3000 random points with 0.005 of Gaussian noise, no boundary marked (rows x y z).
+Eigen::MatrixX3d scanPatchCloud();
+
 struct CutResult {
   TriangleMesh mesh;                     // what is left, unused vertices removed
   TriangleMesh removed;                  // the cut-out triangles (ground truth)

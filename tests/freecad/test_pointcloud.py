@@ -65,6 +65,7 @@ def test_a_points_cloud_without_boundary_is_fitted_within_a_model_unit_tolerance
     face, rep = HoleFill.fitPoints(cloud, tolerance=0.02)  # 20 mm sheet, 0.02 mm
     assert face.isValid() and face.Area > 390, face.Area
     assert rep["met_tolerance"] and max(rep["errors"]) <= 0.02 + 1e-12, (rep["met_tolerance"], max(rep["errors"]))
+    assert rep["folds"] == 0, rep["folds"]
     assert rep["boundary_found"] > 40 and len(rep["boundary"]) == rep["boundary_found"], rep["boundary_found"]
     assert rep["levels"] > 1 and len(rep["cells"]) > 16, (rep["levels"], len(rep["cells"]))
     dofs = [it["dof"] for it in rep["iterations"]]

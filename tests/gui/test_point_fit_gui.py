@@ -1,10 +1,10 @@
 """GUI test of "Fit point cloud" in the real FreeCAD: a scanned-like Points cloud of a 40 mm bumpy
-sheet (no boundary marked) is selected with a real click; the panel previews with BIDGCN: the
-boundary is found, the fit meets the 0.04 mm tolerance, and the hierarchical mesh (one colour
-per level) and the point errors are drawn in the 3D view. Switching to shape-preserving and
-unchecking adaptive refinement previews one uniform level that does not meet the tolerance.
-OK makes a PointCloudFit object (valid face within the tolerance of the points) that recomputes
-when its options change; undo removes it and the cloud is untouched. A bad selection answers
+sheet (no boundary marked) is selected with a real click; the panel previews with
+shape-preserving parameters: the boundary is found, the fit meets the 0.04 mm tolerance without
+folds, and the hierarchical mesh (one colour per level) and the point errors are drawn in the 3D
+view. BIDGCN parameters preview too; unchecking adaptive refinement previews one uniform level
+that does not meet the tolerance. OK makes a PointCloudFit object (valid face within the
+tolerance of the points) that recomputes when its options change; undo removes it and the cloud is untouched. A bad selection answers
 with a message and changes nothing. Screenshots are saved."""
 import json
 import math
@@ -66,13 +66,13 @@ def body():
     status = mw.findChild(QtWidgets.QLabel, "HoleFillPointFitStatus")
     method = mw.findChild(QtWidgets.QComboBox, "HoleFillPointFitMethod")
     tol = mw.findChild(QtWidgets.QDoubleSpinBox, "HoleFillPointFitTolerance")
-    assert status is not None and method.currentText() == "bidgcn", status
+    assert status is not None and method.currentText() == "shape", status
     assert abs(tol.value() - 0.001 * cloud.Points.BoundBox.DiagonalLength) < 0.01 * tol.value(), tol.value()
     tol.setValue(0.04)
     QTest.mouseClick(mw.findChild(QtWidgets.QPushButton, "HoleFillPointFitPreview"), QtCore.Qt.LeftButton)
     h.pump(2000)
     text = status.text()
-    assert "bidgcn parameters" in text and ", found" in text and "tolerance met" in text, text
+    assert "shape parameters" in text and ", found" in text and "tolerance met" in text and "folds" not in text, text
     sg = view.getSceneGraph()
     names = set()
     for i in range(sg.getNumChildren()):
@@ -81,16 +81,21 @@ def body():
     view.viewIsometric()
     view.fitAll()
     h.pump(300)
-    view.saveImage(h.shot("gui_point_fit_1_bidgcn.png"), 1024, 768, "White")
+    view.saveImage(h.shot("gui_point_fit_1_shape.png"), 1024, 768, "White")
 
-    # One uniform level, shape-preserving: previewed, tolerance not met.
+    method.setCurrentText("bidgcn")
+    QTest.mouseClick(mw.findChild(QtWidgets.QPushButton, "HoleFillPointFitPreview"), QtCore.Qt.LeftButton)
+    h.pump(2000)
+    assert "bidgcn parameters" in status.text(), status.text()
+    view.saveImage(h.shot("gui_point_fit_2_bidgcn.png"), 1024, 768, "White")
+
+    # One uniform level: previewed, tolerance not met.
     method.setCurrentText("shape")
     mw.findChild(QtWidgets.QCheckBox, "HoleFillPointFitAdaptive").setChecked(False)
     QTest.mouseClick(mw.findChild(QtWidgets.QPushButton, "HoleFillPointFitPreview"), QtCore.Qt.LeftButton)
     h.pump(1500)
     assert "shape parameters" in status.text() and "tolerance NOT met" in status.text(), status.text()
-    view.saveImage(h.shot("gui_point_fit_2_uniform.png"), 1024, 768, "White")
-    method.setCurrentText("bidgcn")
+    view.saveImage(h.shot("gui_point_fit_3_uniform.png"), 1024, 768, "White")
     mw.findChild(QtWidgets.QCheckBox, "HoleFillPointFitAdaptive").setChecked(True)
 
     QTest.mouseClick(h.task_ok_button(), QtCore.Qt.LeftButton)
@@ -100,11 +105,11 @@ def body():
     fit = fits[0]
     rep = json.loads(fit.Report)
     assert fit.Shape.isValid() and len(fit.Shape.Faces) == 1
-    assert rep["met_tolerance"] and rep["parameterization"]["method"] == "bidgcn", rep
+    assert rep["met_tolerance"] and rep["parameterization"]["method"] == "shape" and rep["folds"] == 0, rep
     import Part
     worst = max(fit.Shape.distToShape(Part.Vertex(p))[0] for p in pts[::250])
     assert worst <= 0.04 + 1e-6, worst
-    view.saveImage(h.shot("gui_point_fit_3_object.png"), 1024, 768, "White")
+    view.saveImage(h.shot("gui_point_fit_4_object.png"), 1024, 768, "White")
 
     # Parametric: a looser tolerance recomputes with fewer functions.
     dof = rep["iterations"][-1]["dof"]

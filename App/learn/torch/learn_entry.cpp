@@ -1,6 +1,7 @@
 // The C entry points of libholefill_learn.so (declared in learn/learn_library.h) and the
 // backend check. Exceptions never cross them: every failure becomes a return code and a message.
 #include <dlfcn.h>
+#include <malloc.h>
 #include <sys/stat.h>
 
 #include <cstring>
@@ -29,6 +30,17 @@ std::string backendInfo() {
     return std::string("unavailable: ") + e.what();
   }
 }
+
+namespace {
+// Freed tensor buffers stay in the heap for the next forward pass instead of going back to the
+// kernel: on this VM every first touch of a fresh page costs ~7 µs, which made a 4 MB gather take
+// 7 ms instead of 0.4 ms (measured). Process-wide, so bounded: blocks up to 64 MB, 128 MB kept.
+const bool kMallocTuned = [] {
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 128 << 20);
+  return true;
+}();
+}  // namespace
 
 void setLearnThreads(int threads) {
   static const auto openblas = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));

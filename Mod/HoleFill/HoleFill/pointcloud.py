@@ -57,7 +57,8 @@ def fitPoints(points, boundary=None, method="shape", tolerance=None, degree=3, t
               corners=None, radius=0.0, weights=""):
     """(face, report): a Part.Face of the fitted B-spline (exact at the finest level) and a dict
     with the parameterization's report, per-iteration degrees of freedom, MSE and max error
-    (relative to the diagonal), `levels`, `met_tolerance`, `uv` and `errors` per point (model
+    (relative to the diagonal), `levels`, `met_tolerance`, `folds` (domain samples of 65 × 65
+    where the surface folds over), `uv` and `errors` per point (model
     units), `cells` (the hierarchical mesh: (level, u0, v0, u1, v1) rows) and `boundary` (the
     boundary point indices used).
 
@@ -126,7 +127,7 @@ class PointCloudFitFeature:
         add("App::PropertyLink", "Source", "Fit", "The Points or Mesh object fitted")
         if "Method" not in obj.PropertiesList:
             obj.addProperty("App::PropertyEnumeration", "Method", "Fit", "Parameterization: bidgcn, shape, invdist or uniform")
-            obj.Method = ["bidgcn", "shape", "invdist", "uniform"]
+            obj.Method = ["shape", "bidgcn", "invdist", "uniform"]
         add("App::PropertyLength", "Tolerance", "Fit", "Largest point distance wanted (0: 1e-3 of the diagonal)", 0.0)
         add("App::PropertyIntegerConstraint", "Degree", "Fit", "Spline degree", (3, 1, 7, 1))
         add("App::PropertyBool", "Adaptive", "Fit", "Refine adaptively (THB-splines); off: one uniform level", True)
@@ -153,7 +154,7 @@ class PointCloudFitFeature:
         return None
 
 
-def makePointCloudFit(source, method="bidgcn", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit"):
+def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit"):
     """A parametric fit of a Points or Mesh object in one undo step (tolerance in model units,
     0: 1e-3 of the diagonal)."""
     import FreeCAD
