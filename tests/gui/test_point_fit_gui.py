@@ -73,6 +73,8 @@ def body():
     h.pump(2000)
     text = status.text()
     assert "shape parameters" in text and ", found" in text and "tolerance met" in text and "folds" not in text, text
+    box.ViewObject.Visibility = False
+    cloud.ViewObject.Visibility = False  # the overlay draws the points in their error colours
     sg = view.getSceneGraph()
     names = set()
     for i in range(sg.getNumChildren()):
