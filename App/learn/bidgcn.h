@@ -2,7 +2,9 @@
 // boundary points carry theirs, predicted by the network in libholefill_learn.so and reached
 // through learn_library.h (no torch here). The cloud must already be in the unit cube (sec. 4.3);
 // the boundary parameters' bounding box is mapped onto [0, 1]² for the network, whose sigmoid
-// answers there, and the answer is mapped back. Used by parameterizeCloud(..., Bidgcn).
+// answers there, and the answer is mapped back. A boundary sampled more densely than the
+// training clouds' is thinned for the network (the rest keep their given parameters). Used by
+// parameterizeCloud(..., Bidgcn).
 #pragma once
 
 #include <Eigen/Dense>
