@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Plots a UVTran training log (log.csv from `holefill train uvtran`): training losses and the
-validation parameter error of both stages against the step, into one PNG."""
+"""Plots a training log (log.csv from `holefill train uvtran|bidgcn`) into one PNG: UVTran's
+training losses and the validation parameter error of both stages, or BIDGCN's training loss
+and validation fit MSE, against the step."""
 import csv
 import sys
 
@@ -9,10 +10,31 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 
+def bidgcn(rows, png, refs):
+    step = [int(r["step"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    ax.plot(step, [float(r["loss"]) for r in rows], label="training loss (fit MSE + parameter term)")
+    ax.plot(step, [float(r["val_median_mse"]) for r in rows], "o-", ms=3, label="validation median fit MSE")
+    for name, value, style in refs:
+        ax.axhline(value, color="k", ls=style, lw=0.8, label=name)
+    ax.set_xlabel("step")
+    ax.set_yscale("log")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("BIDGCN training: %d steps, %.2f h" % (step[-1], float(rows[-1]["hours"])))
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    print("wrote", png)
+
+
 def main(log, png):
     rows = list(csv.DictReader(open(log)))
     if not rows:
         sys.exit("no rows in %s" % log)
+    if "val_median_mse" in rows[0]:
+        # The classical methods' medians on 1000-point clouds (docs/benchmarks.md) and the goal.
+        return bidgcn(rows, png, [("inverse distance 4.6e-3", 4.6e-3, ":"), ("shape-preserving 2.0e-4", 2.0e-4, "-."),
+                                  ("goal 6e-5", 6e-5, "--")])
     step = [int(r["step"]) for r in rows]
     col = lambda k: [float(r[k]) for r in rows]
     fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.5))

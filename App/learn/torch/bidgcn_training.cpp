@@ -110,7 +110,8 @@ int trainBidgcn(const BidgcnTrainOptions& o) {
   const std::string ckptNet = o.outDir + "/checkpoint.pt", ckptOpt = o.outDir + "/checkpoint_optimizer.pt",
                     ckptState = o.outDir + "/checkpoint_state.txt", logPath = o.outDir + "/log.csv";
   const bool resume = fileExists(ckptState);
-  BidgcnNet net = resume ? loadBidgcn(ckptNet) : BidgcnNet(BidgcnConfig{});
+  BidgcnNet net = resume ? loadBidgcn(ckptNet) : !o.init.empty() ? loadBidgcn(o.init) : BidgcnNet(BidgcnConfig{});
+  if (!resume && !o.init.empty()) std::printf("[bidgcn] starting from %s\n", o.init.c_str());
   net->train();
   torch::optim::Adam opt(net->parameters(), torch::optim::AdamOptions(o.learningRate));
   int step = 0;

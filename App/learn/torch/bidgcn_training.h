@@ -30,6 +30,7 @@ struct BidgcnTrainOptions {
   double checkpointMinutes = 5;
   double maxHours = 0;            // > 0: checkpoint and stop after this much wall time (resume later)
   unsigned long long seed = 1;    // parameter initialization
+  std::string init;               // without a checkpoint: start from these weights (fine-tuning), not at random
 };
 
 int trainBidgcn(const BidgcnTrainOptions& options);  // 0 when finished, 3 when stopped by maxHours
