@@ -2,6 +2,7 @@
 parameters back (shape-preserving), a wavy Points cloud gets parameters inside the unit square
 with every method (BIDGCN included), a Points cloud without a boundary and a Mesh are fitted
 within a tolerance in model units, bad input raises clear errors."""
+import json
 import math
 import random
 
@@ -89,6 +90,31 @@ def test_a_mesh_is_fitted_through_its_own_boundary_with_bidgcn():
     assert len(rep["boundary"]) == 120 and rep["boundary_found"] == -1, (len(rep["boundary"]), rep["boundary_found"])
     assert rep["met_tolerance"], rep["iterations"]
     assert face.isValid()
+
+
+def test_a_parametric_fit_follows_its_options_and_leaves_nothing_when_it_fails():
+    doc = FreeCAD.newDocument("PointFit")
+    doc.UndoMode = 1
+    src = doc.addObject("Points::Feature", "Scan")
+    src.Points = Points.Points(bump_cloud(n=1200))
+    box = doc.addObject("Part::Box", "Box")
+    doc.recompute()
+    count = len(doc.Objects)
+    fcharness.expect_error(lambda: HoleFill.makePointCloudFit(box), "neither a Points nor a Mesh")
+    assert len(doc.Objects) == count
+    fit = HoleFill.makePointCloudFit(src, tolerance=0.05)
+    rep = json.loads(fit.Report)
+    assert fit.Method == "shape" and rep["met_tolerance"] and fit.Shape.isValid(), rep
+    dof = rep["iterations"][-1]["dof"]
+    fit.Tolerance = 0.5
+    doc.recompute()
+    looser = json.loads(fit.Report)
+    assert looser["iterations"][-1]["dof"] < dof and looser["met_tolerance"], (dof, looser["iterations"])
+    fit.Degree = 0  # refused by the constraint, kept at 1..7
+    assert fit.Degree >= 1, fit.Degree
+    doc.undo()
+    assert len(doc.Objects) == count, [o.Name for o in doc.Objects]
+    FreeCAD.closeDocument(doc.Name)
 
 
 def test_bad_clouds_give_clear_errors():
