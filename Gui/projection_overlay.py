@@ -5,6 +5,8 @@ from pivy import coin
 
 import FreeCADGui
 
+from HoleFillGui import scene_overlay
+
 NAME = "HoleFillProjectionSurface"
 
 
@@ -30,25 +32,9 @@ def show(face, tolerance=None):
     root = _root()
     if root is None:
         return None
-    pts, tris = face.tessellate(tolerance or face.BoundBox.DiagonalLength * 2e-3)
-    sep = coin.SoSeparator()
-    sep.setName(NAME)
+    sep = scene_overlay.face_node(face, NAME, (0.25, 0.45, 0.95), 0.6, tolerance)
     pick = coin.SoPickStyle()
     pick.style = coin.SoPickStyle.UNPICKABLE
-    hints = coin.SoShapeHints()
-    hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE
-    hints.creaseAngle = 1.0
-    mat = coin.SoMaterial()
-    mat.diffuseColor = (0.25, 0.45, 0.95)
-    mat.transparency = 0.6
-    coords = coin.SoCoordinate3()
-    coords.point.setValues(0, len(pts), [(p.x, p.y, p.z) for p in pts])
-    faces = coin.SoIndexedFaceSet()
-    idx = []
-    for t in tris:
-        idx.extend([t[0], t[1], t[2], -1])
-    faces.coordIndex.setValues(0, len(idx), idx)
-    for n in (pick, hints, mat, coords, faces):
-        sep.addChild(n)
+    sep.insertChild(pick, 0)
     root.addChild(sep)
     return sep

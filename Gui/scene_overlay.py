@@ -32,3 +32,28 @@ def placed_root(name, placement):
 
 def show(root):
     FreeCADGui.ActiveDocument.ActiveView.getSceneGraph().addChild(root)
+
+
+def face_node(face, name, rgb, transparency, tolerance=None):
+    """A separator named `name` drawing `face` (a Part.Face) tessellated (chord tolerance: 0.2%
+    of its diagonal unless given), in colour `rgb` with the given transparency."""
+    from pivy import coin
+    pts, tris = face.tessellate(tolerance or 0.002 * max(face.BoundBox.DiagonalLength, 1e-9))
+    sep = coin.SoSeparator()
+    sep.setName(name)
+    hints = coin.SoShapeHints()
+    hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE
+    hints.creaseAngle = 1.0
+    mat = coin.SoMaterial()
+    mat.diffuseColor.setValue(*rgb)
+    mat.transparency.setValue(transparency)
+    coords = coin.SoCoordinate3()
+    coords.point.setValues(0, len(pts), [[p.x, p.y, p.z] for p in pts])
+    faces = coin.SoIndexedFaceSet()
+    idx = []
+    for t in tris:
+        idx += [t[0], t[1], t[2], -1]
+    faces.coordIndex.setValues(0, len(idx), idx)
+    for nd in (hints, mat, coords, faces):
+        sep.addChild(nd)
+    return sep

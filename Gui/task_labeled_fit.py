@@ -115,21 +115,7 @@ class FitPanel:
         face, _, rep = self.result
         root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.labels.Name), self.labels.Source.Placement)
         if self.show["surface"].isChecked():
-            pts, tris = face.tessellate(0.002 * max(face.BoundBox.DiagonalLength, 1e-9))
-            sep = coin.SoSeparator()
-            sep.setName(OVERLAY + "_surface")
-            mat = coin.SoMaterial()
-            mat.diffuseColor.setValue(0.45, 0.75, 0.35)
-            mat.transparency.setValue(0.35)
-            coords = coin.SoCoordinate3()
-            coords.point.setValues(0, len(pts), [[p.x, p.y, p.z] for p in pts])
-            faces = coin.SoIndexedFaceSet()
-            idx = []
-            for t in tris:
-                idx += [t[0], t[1], t[2], -1]
-            faces.coordIndex.setValues(0, len(idx), idx)
-            for nd in (mat, coords, faces):
-                sep.addChild(nd)
+            sep = scene_overlay.face_node(face, OVERLAY + "_surface", (0.45, 0.75, 0.35), 0.35)
             root.addChild(sep)
         ev, et = rep["extended"]
         regionFacets = self.labels.Source.Mesh.CountFacets

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <map>
 
 #include <ATen/Parallel.h>
 
 #include "geometry/error.h"
+#include "learn/torch/weight_file.h"
 
 namespace holefill::learn {
 
@@ -174,54 +173,14 @@ torch::Tensor bezierFitLoss(const torch::Tensor& interiorUV, const torch::Tensor
 }
 
 void saveBidgcn(BidgcnNet& net, const std::string& path, const std::string& card) {
-  torch::serialize::OutputArchive a;
-  a.write("format", torch::tensor({kFormat}));
-  a.write("config", torch::tensor(net->config.toVector(), torch::kDouble));
-  std::vector<int64_t> bytes(card.begin(), card.end());
-  a.write("card", torch::tensor(bytes.empty() ? std::vector<int64_t>{0} : bytes));
-  torch::serialize::OutputArchive params;
-  net->save(params);
-  a.write("net", params);
-  const std::string tmp = path + ".tmp";
-  a.save_to(tmp);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Error("cannot write BIDGCN weights to " + path);
+  saveWeights(*net, torch::tensor(net->config.toVector(), torch::kDouble), kFormat, card, path, "BIDGCN");
 }
 
 BidgcnNet loadBidgcn(const std::string& path) {
-  if (!std::ifstream(path, std::ios::binary)) throw Error("BIDGCN weights not found: " + path);
   torch::serialize::InputArchive a;
-  try {
-    a.load_from(path);
-  } catch (const c10::Error&) {
-    throw Error("BIDGCN weights " + path + " are not a readable torch archive (truncated or corrupt)");
-  }
-  torch::Tensor format, config;
-  try {
-    a.read("format", format);
-    a.read("config", config);
-  } catch (const c10::Error&) {
-    throw Error("BIDGCN weights " + path + " have no format/config record: not a HoleFill BIDGCN file");
-  }
-  if (format.numel() != 1 || format.item<int64_t>() != kFormat)
-    throw Error("BIDGCN weights " + path + " are of format " + std::to_string(format.numel() ? format.item<int64_t>() : 0) +
-                ", this build reads " + std::to_string(kFormat) + ": retrain or use matching weights");
-  const torch::Tensor cfgT = config.to(torch::kDouble).contiguous();
-  BidgcnNet net(BidgcnConfig::fromVector(std::vector<double>(cfgT.data_ptr<double>(), cfgT.data_ptr<double>() + cfgT.numel())));
-  std::map<std::string, std::vector<int64_t>> shapes;
-  for (const auto& p : net->named_parameters()) shapes[p.key()] = p.value().sizes().vec();
-  try {
-    torch::serialize::InputArchive params;
-    a.read("net", params);
-    net->load(params);
-  } catch (const c10::Error& e) {
-    throw Error("BIDGCN weights " + path + " do not match the network: " + std::string(e.what_without_backtrace()).substr(0, 200));
-  }
-  for (const auto& p : net->named_parameters()) {
-    if (p.value().sizes().vec() != shapes[p.key()]) throw Error("BIDGCN weights " + path + ": parameter " + p.key() + " has the wrong shape");
-    if (!torch::isfinite(p.value()).all().item<bool>())
-      throw Error("BIDGCN weights " + path + ": parameter " + p.key() + " holds NaN or infinity");
-  }
-  net->eval();
+  const torch::Tensor cfg = openWeights(a, path, kFormat, "BIDGCN").to(torch::kDouble).contiguous();
+  BidgcnNet net(BidgcnConfig::fromVector(std::vector<double>(cfg.data_ptr<double>(), cfg.data_ptr<double>() + cfg.numel())));
+  loadWeights(a, *net, path, "BIDGCN");
   return net;
 }
 

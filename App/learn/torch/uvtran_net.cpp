@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "geometry/error.h"
+#include "learn/torch/weight_file.h"
 
 namespace holefill::learn {
 
@@ -138,60 +139,14 @@ torch::Tensor voxelLoss(const torch::Tensor& logits, const torch::Tensor& target
 }
 
 void saveUvtran(UvtranNet& net, const std::string& path, const std::string& card) {
-  torch::serialize::OutputArchive a;
-  a.write("format", torch::tensor({kFormat}));
-  a.write("config", torch::tensor(net->config.toVector()));
-  std::vector<int64_t> bytes(card.begin(), card.end());
-  a.write("card", torch::tensor(bytes.empty() ? std::vector<int64_t>{0} : bytes));
-  torch::serialize::OutputArchive params;
-  net->save(params);
-  a.write("net", params);
-  const std::string tmp = path + ".tmp";
-  a.save_to(tmp);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw Error("cannot write UVTran weights to " + path);
+  saveWeights(*net, torch::tensor(net->config.toVector()), kFormat, card, path, "UVTran");
 }
 
 UvtranNet loadUvtran(const std::string& path) {
-  {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw Error("UVTran weights not found: " + path);
-  }
   torch::serialize::InputArchive a;
-  try {
-    a.load_from(path);
-  } catch (const c10::Error& e) {
-    throw Error("UVTran weights " + path + " are not a readable torch archive (truncated or corrupt)");
-  }
-  torch::Tensor format, config;
-  try {
-    a.read("format", format);
-    a.read("config", config);
-  } catch (const c10::Error&) {
-    throw Error("UVTran weights " + path + " have no format/config record: not a HoleFill UVTran file");
-  }
-  if (format.numel() != 1 || format.item<int64_t>() != kFormat)
-    throw Error("UVTran weights " + path + " are of format " + std::to_string(format.numel() ? format.item<int64_t>() : 0) +
-                ", this build reads " + std::to_string(kFormat) + ": retrain or use matching weights");
-  const torch::Tensor cfgT = config.to(torch::kLong).contiguous();
-  const UvtranConfig cfg = UvtranConfig::fromVector(std::vector<int64_t>(cfgT.data_ptr<int64_t>(), cfgT.data_ptr<int64_t>() + cfgT.numel()));
-  UvtranNet net(cfg);
-  std::map<std::string, std::vector<int64_t>> shapes;
-  for (const auto& p : net->named_parameters()) shapes[p.key()] = p.value().sizes().vec();
-  for (const auto& p : net->named_buffers()) shapes[p.key()] = p.value().sizes().vec();
-  try {
-    torch::serialize::InputArchive params;
-    a.read("net", params);
-    net->load(params);
-  } catch (const c10::Error& e) {
-    throw Error("UVTran weights " + path + " do not match the network: " + std::string(e.what_without_backtrace()).substr(0, 200));
-  }
-  for (const auto& p : net->named_parameters()) {
-    if (p.value().sizes().vec() != shapes[p.key()])
-      throw Error("UVTran weights " + path + ": parameter " + p.key() + " has the wrong shape");
-    if (!torch::isfinite(p.value()).all().item<bool>())
-      throw Error("UVTran weights " + path + ": parameter " + p.key() + " holds NaN or infinity");
-  }
-  net->eval();
+  const torch::Tensor cfg = openWeights(a, path, kFormat, "UVTran").to(torch::kLong).contiguous();
+  UvtranNet net(UvtranConfig::fromVector(std::vector<int64_t>(cfg.data_ptr<int64_t>(), cfg.data_ptr<int64_t>() + cfg.numel())));
+  loadWeights(a, *net, path, "UVTran");
   return net;
 }
 
