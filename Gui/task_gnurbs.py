@@ -8,7 +8,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay
+from HoleFillGui import scene_overlay, task_dialog
 
 OVERLAY = "HoleFillGnurbsCage"
 COLOR_SHARP, COLOR_EP, COLOR_ANCHOR = (1.0, 0.55, 0.1), (0.9, 0.0, 0.0), (0.1, 0.3, 1.0)
@@ -178,16 +178,10 @@ class GnurbsPanel:
 
     def accept(self):
         import HoleFill
-        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
-        try:
-            obj = HoleFill.makeGnurbs(self.obj, sharpEdges=sorted(self.sharp), anchors=self.anchorValues(),
-                                      refine=self.refine.isChecked(), knots=self.knots)
-        except Exception as e:
-            self.status.setText("Failed: %s" % e)
-            FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
+        obj = task_dialog.create(self.status, lambda: HoleFill.makeGnurbs(self.obj, sharpEdges=sorted(self.sharp), anchors=self.anchorValues(),
+                                                                          refine=self.refine.isChecked(), knots=self.knots))
+        if obj is None:
             return False
-        finally:
-            QtWidgets.QApplication.restoreOverrideCursor()
         import json
         rep = json.loads(obj.Report)
         FreeCAD.Console.PrintMessage("HoleFill: G-NURBS surface %s over %s: %d B-rep faces, %d extraordinary points, "

@@ -8,7 +8,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay
+from HoleFillGui import scene_overlay, task_dialog
 
 OVERLAY = "HoleFillLabeledFit"
 
@@ -166,15 +166,9 @@ class FitPanel:
     def accept(self):
         import json
         import HoleFill
-        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
-        try:
-            obj = HoleFill.makeLabeledFit(self.labels, **self.options())
-        except Exception as e:
-            self.status.setText("Failed: %s" % e)
-            FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
+        obj = task_dialog.create(self.status, lambda: HoleFill.makeLabeledFit(self.labels, **self.options()))
+        if obj is None:
             return False
-        finally:
-            QtWidgets.QApplication.restoreOverrideCursor()
         r = json.loads(obj.Report)
         FreeCAD.Console.PrintMessage("HoleFill: labeled fit %s of %s: data max %.2e, %d weak control points, log10 condition %.1f\n" % (
             obj.Label, self.labels.Source.Label, r["data_max"], r["weak_control_points"], r["log10_condition"]))

@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay
+from HoleFillGui import scene_overlay, task_dialog
 
 OVERLAY = "HoleFillMeshHoles"
 COLOR_FILL, COLOR_SKIP, COLOR_PICKED = (1.0, 0.55, 0.1), (0.55, 0.55, 0.55), (0.9, 0.0, 0.0)
@@ -139,15 +139,9 @@ class MeshFillPanel:
         if not holes:
             self.status.setText("No hole is checked: check the holes to fill, or Cancel.")
             return False
-        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
-        try:
-            feature = HoleFill.makeMeshFill(self.obj, holes=holes, **SHAPES[self.shape.currentIndex()][1])
-        except Exception as e:
-            self.status.setText("Failed: %s" % e)
-            FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
+        feature = task_dialog.create(self.status, lambda: HoleFill.makeMeshFill(self.obj, holes=holes, **SHAPES[self.shape.currentIndex()][1]))
+        if feature is None:
             return False
-        finally:
-            QtWidgets.QApplication.restoreOverrideCursor()
         import json
         rep = json.loads(feature.HoleFillReport)
         FreeCAD.Console.PrintMessage("HoleFill: filled %d of %d holes of %s into %s (%s), %.3f s\n" % (

@@ -9,7 +9,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay
+from HoleFillGui import scene_overlay, task_dialog
 
 OVERLAY = "HoleFillPointFit"
 LEVEL_COLOURS = [(0.1, 0.1, 0.1), (0.1, 0.3, 0.9), (0.0, 0.6, 0.3), (0.85, 0.5, 0.0), (0.8, 0.1, 0.6), (0.6, 0.0, 0.0)]
@@ -185,15 +185,9 @@ class FitPanel:
     def accept(self):
         import json
         import HoleFill
-        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
-        try:
-            obj = HoleFill.makePointCloudFit(self.source, **self.options())
-        except Exception as e:
-            self.status.setText("Failed: %s" % e)
-            FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
+        obj = task_dialog.create(self.status, lambda: HoleFill.makePointCloudFit(self.source, **self.options()))
+        if obj is None:
             return False
-        finally:
-            QtWidgets.QApplication.restoreOverrideCursor()
         r = json.loads(obj.Report)
         FreeCAD.Console.PrintMessage("HoleFill: point-cloud fit %s of %s: %d functions, max error %.3g mm, tolerance %s\n" % (
             obj.Label, self.source.Label, r["iterations"][-1]["dof"], r["iterations"][-1]["max_error"] * r["diagonal"],
