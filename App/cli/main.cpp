@@ -89,7 +89,7 @@ const char* kUsage =
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
     "                [--max-hours H] [--width D] [--layers L]   (resumes from DIR/checkpoint.pt)\n"
     "  holefill train bidgcn [--out DIR] [--steps N] [--batch B] [--noise S] [--lr L] [--threads T] [--max-hours H]\n"
-    "                (resumes from DIR/checkpoint.pt)\n"
+    "                [--init W --first-cloud K]   (fine-tune W on clouds K, K+1, ...; resumes from DIR/checkpoint.pt)\n"
     "  holefill eval uvtran [--weights W] [--samples N] [--split test|validation]\n"
     "  holefill eval bidgcn [--weights W] [--clouds N] [--interior N] [--noise S] [--split test|validation]\n"
     "  holefill --version\n";

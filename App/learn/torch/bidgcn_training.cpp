@@ -137,7 +137,7 @@ int trainBidgcn(const BidgcnTrainOptions& o) {
     lastCkpt = Clock::now();
   };
   auto batchAt = [&](int s) {
-    return std::async(std::launch::async, makeBatch, PatchCloudSplit::Train, uint64_t(s) * o.batch, o.batch, o.interior, o.boundary,
+    return std::async(std::launch::async, makeBatch, PatchCloudSplit::Train, o.firstCloud + uint64_t(s) * o.batch, o.batch, o.interior, o.boundary,
                       o.noise, o.noise > 0);
   };
   auto next = batchAt(step);

@@ -31,6 +31,8 @@ struct BidgcnTrainOptions {
   double maxHours = 0;            // > 0: checkpoint and stop after this much wall time (resume later)
   unsigned long long seed = 1;    // parameter initialization
   std::string init;               // without a checkpoint: start from these weights (fine-tuning), not at random
+  unsigned long long firstCloud = 0;  // index of the first training cloud: a fine-tuning run past the
+                                      // clouds its init already saw gets fresh data, not a repeat
 };
 
 int trainBidgcn(const BidgcnTrainOptions& options);  // 0 when finished, 3 when stopped by maxHours

@@ -127,9 +127,10 @@ int trainMain(int argc, char** argv) {
 
 int trainBidgcnMain(int argc, char** argv) {
   const Args a = parse(argc, argv, 2, {"out", "steps", "batch", "interior", "noise", "lr", "supervision", "threads", "validate-every",
-                                       "validation-clouds", "checkpoint-minutes", "max-hours", "seed", "init"});
+                                       "validation-clouds", "checkpoint-minutes", "max-hours", "seed", "init", "first-cloud"});
   BidgcnTrainOptions o;
   o.init = a.get("init", "");
+  o.firstCloud = std::stoull(a.get("first-cloud", "0"));
   o.outDir = a.get("out", "bidgcn-run");
   o.steps = std::stoi(a.get("steps", std::to_string(o.steps)));
   o.batch = std::stoi(a.get("batch", std::to_string(o.batch)));
