@@ -104,6 +104,37 @@ TEST(BidgcnNet, RadiusGraphKeepsTheNearestWithinTheRadius) {
   EXPECT_EQ(none.degree.sum().item<float>(), 0);
 }
 
+TEST(BidgcnNet, RadiusGraphEqualsBruteForceOnDenseFeatureClouds) {
+  // 64-dimensional features as the dynamic layers see them: a row has hundreds of candidates
+  // within the radius, of which the k nearest are kept; 300 rows span several row blocks.
+  torch::manual_seed(5);
+  const torch::Tensor f = torch::randn({300, 64}) * 0.012, t = torch::randn({200, 64}) * 0.012;
+  const double r = 0.2;
+  for (const int k : {8, 32, 1000}) {
+    const RadiusGraph g = radiusGraph(f, t, r, k);
+    const torch::Tensor d2 = (f.to(torch::kDouble).unsqueeze(1) - t.to(torch::kDouble).unsqueeze(0)).pow(2).sum(-1);
+    int64_t e = 0, many = 0;
+    for (int64_t i = 0; i < 300; ++i) {
+      std::vector<std::pair<double, int64_t>> within;
+      for (int64_t j = 0; j < 200; ++j)
+        if (d2[i][j].item<double>() <= r * r) within.push_back({d2[i][j].item<double>(), j});
+      std::sort(within.begin(), within.end());
+      many += within.size() > 32;
+      within.resize(std::min<size_t>(within.size(), k));
+      std::vector<int64_t> want;
+      for (const auto& w : within) want.push_back(w.second);
+      std::sort(want.begin(), want.end());
+      ASSERT_EQ(g.degree[i][0].item<float>(), float(want.size())) << "row " << i << " k " << k;
+      for (int64_t j : want) {
+        ASSERT_EQ(g.dst[e].item<int64_t>(), i);
+        ASSERT_EQ(g.src[e++].item<int64_t>(), j) << "row " << i << " k " << k;
+      }
+    }
+    EXPECT_EQ(e, g.src.size(0));
+    EXPECT_GT(many, 100);  // the selection among many candidates is exercised
+  }
+}
+
 TEST(BidgcnNet, LossVanishesAtExactParametersAndPullsTowardsThem) {
   const Cloud c = cloud(400, 2);
   const torch::Tensor exact = bezierFitLoss(c.interiorUV, c.interior, c.boundary, c.boundaryUV);

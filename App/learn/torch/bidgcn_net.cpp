@@ -67,46 +67,47 @@ torch::Tensor EdgeMlpImpl::forward(torch::Tensor x) {
 
 RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, double r, int k) {
   torch::NoGradGuard ng;
-  const torch::Tensor f = from.detach().to(torch::kFloat), t = to.detach().to(torch::kFloat);
-  const torch::Tensor d2 = torch::addmm(f.pow(2).sum(-1, true) + t.pow(2).sum(-1).unsqueeze(0), f, t.t(), 1, -2).contiguous();
+  const torch::Tensor f = from.detach().to(torch::kFloat).contiguous(), t = to.detach().to(torch::kFloat).contiguous();
+  const torch::Tensor fNorm = f.pow(2).sum(-1, true), tNorm = t.pow(2).sum(-1).unsqueeze(0);
   const int64_t n = f.size(0), m = t.size(0);
   const float r2 = float(r * r);
-  // Per row: the k nearest within r, kept in a max-heap while scanning the row's distances (once
-  // the heap is full almost every candidate is rejected by one comparison; a top-k over all m, or
-  // selecting among all candidates, is several times slower on the dense feature-space graphs).
-  std::vector<std::vector<int64_t>> rows(n);
-  const float* D = d2.data_ptr<float>();
-  at::parallel_for(0, n, 128, [&](int64_t a, int64_t b) {
-    std::vector<std::pair<float, int64_t>> heap;
-    for (int64_t i = a; i < b; ++i) {
-      const float* d = D + i * m;
-      heap.clear();
-      for (int64_t j = 0; j < m; ++j) {
-        if (d[j] > r2) continue;
-        if (int64_t(heap.size()) < k) {
-          heap.emplace_back(d[j], j);
-          std::push_heap(heap.begin(), heap.end());
-        } else if (d[j] < heap.front().first) {
-          std::pop_heap(heap.begin(), heap.end());
-          heap.back() = {d[j], j};
-          std::push_heap(heap.begin(), heap.end());
+  // Per block of rows: the squared distances to all of `to` (a block stays in cache), then per row
+  // the candidates within r, compacted without branches, and when there are more than k, the k
+  // nearest by (distance, index). That is the same set a scan with a bounded max-heap keeps, at a
+  // fraction of its cost on the dense feature-space graphs, where a row has hundreds of candidates.
+  std::vector<int64_t> nbr(n * int64_t(k));
+  std::vector<int> count(n);
+  constexpr int64_t kBlock = 64;
+  at::parallel_for(0, (n + kBlock - 1) / kBlock, 1, [&](int64_t a, int64_t b) {
+    std::vector<std::pair<float, int64_t>> cand(m);
+    for (int64_t blk = a; blk < b; ++blk) {
+      const int64_t i0 = blk * kBlock, rows = std::min(kBlock, n - i0);
+      const torch::Tensor d2 = torch::addmm(fNorm.narrow(0, i0, rows) + tNorm, f.narrow(0, i0, rows), t.t(), 1, -2).contiguous();
+      const float* D = d2.data_ptr<float>();
+      for (int64_t q = 0; q < rows; ++q) {
+        const float* d = D + q * m;
+        int64_t c = 0;
+        for (int64_t j = 0; j < m; ++j) {
+          cand[c] = {d[j], j};
+          c += d[j] <= r2;
         }
+        if (c > k) std::nth_element(cand.begin(), cand.begin() + (k - 1), cand.begin() + c), c = k;
+        int64_t* out = nbr.data() + (i0 + q) * k;
+        for (int64_t e = 0; e < c; ++e) out[e] = cand[e].second;
+        std::sort(out, out + c);
+        count[i0 + q] = int(c);
       }
-      auto& c = rows[i];
-      c.resize(heap.size());
-      for (size_t q = 0; q < heap.size(); ++q) c[q] = heap[q].second;
-      std::sort(c.begin(), c.end());
     }
   });
   int64_t E = 0;
-  for (const auto& c : rows) E += c.size();
+  for (int c : count) E += c;
   RadiusGraph g{torch::empty({E}, torch::kLong), torch::empty({E}, torch::kLong), torch::empty({n, 1})};
   int64_t *S = g.src.data_ptr<int64_t>(), *T = g.dst.data_ptr<int64_t>();
   float* deg = g.degree.data_ptr<float>();
   int64_t e = 0;
   for (int64_t i = 0; i < n; ++i) {
-    deg[i] = float(rows[i].size());
-    for (int64_t j : rows[i]) S[e] = j, T[e++] = i;
+    deg[i] = float(count[i]);
+    for (int q = 0; q < count[i]; ++q) S[e] = nbr[i * k + q], T[e++] = i;
   }
   g.degree = g.degree.to(from.dtype());
   return g;
