@@ -16,7 +16,6 @@
 #     data error, band deviation both ways, weak control points, condition, time; curvature
 #     pictures in bench-out/fitting. BENCH_ONLY=fitting runs part 5 alone.
 #  6. holefill_bench_cloud_params: point-cloud parameterization (shape-preserving, inverse
-#     distance, uniform) on the bidgcn paper's random biquadratic clouds: biquadratic-fit MSE,
 #     distance, uniform) and BIDGCN on the bidgcn paper's random Bézier clouds: fit MSE,
 #     failures, time. BENCH_ONLY=cloud-params runs part 6 alone (BENCH_CLOUDS, default 100).
 #  7. holefill_bench_thb: adaptive THB fitting vs uniform B-spline refinement on a region of the
