@@ -66,6 +66,7 @@ torch::Tensor EdgeMlpImpl::forward(torch::Tensor x) {
 }
 
 RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, double r, int k) {
+  HF_CHECK(k >= 1 && to.size(0) < (int64_t(1) << 31), "a radius graph keeps at least one neighbour, of fewer than 2^31 points");
   torch::NoGradGuard ng;
   const torch::Tensor f = from.detach().to(torch::kFloat).contiguous(), t = to.detach().to(torch::kFloat).contiguous();
   const torch::Tensor fNorm = f.pow(2).sum(-1, true), tNorm = t.pow(2).sum(-1).unsqueeze(0);
