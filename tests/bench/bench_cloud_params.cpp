@@ -74,9 +74,8 @@ int main(int argc, char** argv) {
       }
       double mean = 0;
       for (double x : mse) mean += x / std::max<size_t>(1, mse.size());
-      std::printf("| %d | %d | %g | %s | %.3e | %.3e | %.3e | %d of %d | %.0f | %.1f |\n", row.degree, row.interior, row.sigma, name, median(mse),
-                  mean, mean / 3,
-                  failed, clouds, median(fb), median(ms));
+      std::printf("| %d | %d | %g | %s | %.3e | %.3e | %.3e | %d of %d | %.0f | %.1f |\n", row.degree, row.interior, row.sigma, name,
+                  median(mse), mean, mean / 3, failed, clouds, median(fb), median(ms));
       if (failed == clouds) std::fprintf(stderr, "%s: %s\n", name, why.c_str());
       std::fflush(stdout);
     }

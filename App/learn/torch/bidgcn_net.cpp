@@ -77,7 +77,8 @@ RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, doub
   // k nearest by (distance, index) are kept and the reach shrinks to the k-th distance. That is the
   // set a scan with a bounded max-heap keeps, at a fraction of its cost on the dense feature-space
   // graphs, where a row has hundreds (and on a 20,000-point scan thousands) of candidates.
-  std::vector<int64_t> nbr(n * int64_t(k));
+  const int64_t stride = std::min<int64_t>(k, m);  // a row's most neighbours
+  std::vector<int64_t> nbr(n * stride);
   std::vector<int> count(n);
   constexpr int64_t kBlock = 64;
   at::parallel_for(0, (n + kBlock - 1) / kBlock, 1, [&](int64_t a, int64_t b) {
@@ -107,7 +108,7 @@ RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, doub
           if (c > 4 * int64_t(k)) keepNearest();
         }
         if (c > k) keepNearest();
-        int64_t* out = nbr.data() + (i0 + q) * k;
+        int64_t* out = nbr.data() + (i0 + q) * stride;
         std::copy(cand.begin(), cand.begin() + c, out);
         std::sort(out, out + c);
         count[i0 + q] = int(c);
@@ -122,7 +123,7 @@ RadiusGraph radiusGraph(const torch::Tensor& from, const torch::Tensor& to, doub
   int64_t e = 0;
   for (int64_t i = 0; i < n; ++i) {
     deg[i] = float(count[i]);
-    for (int q = 0; q < count[i]; ++q) S[e] = nbr[i * k + q], T[e++] = i;
+    for (int q = 0; q < count[i]; ++q) S[e] = nbr[i * stride + q], T[e++] = i;
   }
   g.degree = g.degree.to(from.dtype());
   return g;
