@@ -97,6 +97,13 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
     }
     for (size_t i = 0; i < det.holes.size(); ++i)
       if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
+    r.edgeRequests = edgeRequests(r.hole, opt.continuity, opt.edgeContinuity, opt.edges);
+    Continuity highest = Continuity::G0;
+    for (const auto& q : r.edgeRequests) highest = std::max(highest, q.asked, [](Continuity a, Continuity b) { return int(a) < int(b); });
+    for (const auto& q : r.edgeRequests)
+      if (q.source == "crease")
+        r.warnings.push_back("Edge" + std::to_string(q.edgeIndex) + " is a crease (its support is " +
+                             std::to_string(q.cornerMismatch * 180 / M_PI) + " deg off the corner plane): asked G0 there");
     r.timings.detect = since(t);
     auto cancelled = [&] {
       r.status = FillStatus::Cancelled;
@@ -164,12 +171,13 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
         c.weight.push_back(unit[k].weight);
         c.normalValid.push_back(unit[k].normalValid);
         c.edge.push_back(unit[k].edge);
+        c.order.push_back(static_cast<int>(r.edgeRequests[unit[k].edge].asked));
       }
       c.referenceUV = P.interiorUV;
       c.referenceXYZ = P.interiorXYZ;
       r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
       VariationalFillOptions so = opt.solver;
-      so.continuity = opt.continuity;
+      so.continuity = highest;
       // The solver meets slightly tighter targets at its samples than the report checks between them.
       so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
       so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
@@ -203,19 +211,32 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
       r.shapeValid = opt.sew ? BRepCheck_Analyzer(r.shape).IsValid() : r.faceValid;
       r.report = continuityReport(r.face, hole);
-      r.achieved = r.report.achieved(r.g0Tolerance, opt.angularTolerance, opt.curvatureTolerance);
-      for (const auto& e : r.report.edges) {
-        const bool bad = e.g0 > r.g0Tolerance || (opt.continuity >= Continuity::G1 && e.g1 > opt.angularTolerance) ||
-                         (opt.continuity == Continuity::G2 && e.g2 > opt.curvatureTolerance);
-        if (bad) r.faultyEdges.push_back(e.edgeIndex);
+      // Per edge: the highest level reached. The fill reaches k when every edge reaches k, or as
+      // much as was asked of it where that is less than the request (a crease asked G0).
+      r.edgeReached.assign(r.edgeRequests.size(), -1);
+      for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
+        const EdgeRequest& q = r.edgeRequests[i];
+        for (const auto& e : r.report.edges)
+          if (e.edgeIndex == q.edgeIndex)
+            r.edgeReached[i] = e.g0 > r.g0Tolerance ? -1 : (e.g1 > opt.angularTolerance ? 0 : (e.g2 > opt.curvatureTolerance ? 1 : 2));
+        if (r.edgeReached[i] < static_cast<int>(q.asked)) r.faultyEdges.push_back(q.edgeIndex);
       }
+      int reached = -1;
+      for (int k = 2; k >= 0 && reached < 0; --k) {
+        bool all = true;
+        for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
+          const int asked = static_cast<int>(r.edgeRequests[i].asked);
+          all = all && r.edgeReached[i] >= (asked < static_cast<int>(opt.continuity) ? std::min(k, asked) : k);
+        }
+        if (all) reached = k;
+      }
+      r.achieved = reached < 0 ? "none" : "G" + std::to_string(reached);
       r.timings.check += since(t);
-      const int reached = r.achieved == "none" ? -1 : r.achieved[1] - '0';
       if (!r.faceValid || !r.shapeValid) {
         r.status = FillStatus::Failed;
         r.failedStage = FillStage::Check;
         r.message = std::string("the filled ") + (!r.faceValid ? "face" : "model") + " is not a valid B-rep (BRepCheck)";
-      } else if (reached < static_cast<int>(opt.continuity)) {
+      } else if (!r.faultyEdges.empty()) {
         r.status = FillStatus::ToleranceNotMet;
         r.failedStage = FillStage::Solve;
         r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
@@ -224,6 +245,9 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       } else {
         r.status = FillStatus::Ok;
         r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
+        int creases = 0;
+        for (const auto& q : r.edgeRequests) creases += q.asked < opt.continuity;
+        if (creases) r.message += "; G0 asked on " + std::to_string(creases) + " crease edge(s)";
       }
       // Met at the samples but not between them: the boundary needs denser samples, once.
       if (r.status != FillStatus::ToleranceNotMet || !vf.toleranceMet || density > 1) break;
@@ -295,6 +319,15 @@ std::string toJson(const HoleFillResult& r) {
   j.field("method", r.methodName).field("requested", r.requested).field("achieved", r.achieved);
   j.field("hole", r.holeIndex + 1).field("corners", r.hole.corners).field("edges", r.hole.edgeIndices());
   j.field("faulty_edges", r.faultyEdges);
+  j.key("edge_continuity").beginArray();
+  for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
+    const EdgeRequest& q = r.edgeRequests[i];
+    const int lv = i < r.edgeReached.size() ? r.edgeReached[i] : -1;
+    j.beginObject().field("edge", q.edgeIndex).field("asked", toString(q.asked)).field("source", q.source);
+    j.field("reached", lv < 0 ? std::string("none") : "G" + std::to_string(lv)).field("corner_mismatch", q.cornerMismatch);
+    j.endObject();
+  }
+  j.endArray();
   writeJsonFields(j, r.report);
   j.field("g0_tolerance", r.g0Tolerance);
   j.field("face_valid", r.faceValid).field("shape_valid", r.shapeValid).field("closed_solid", r.closedSolid);

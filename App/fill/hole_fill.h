@@ -12,11 +12,13 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "brep/boundary_sampling.h"
 #include "brep/continuity_report.h"
+#include "brep/edge_continuity.h"
 #include "brep/hole_detection.h"
 #include "fill/parameterizer.h"
 #include "fill/variational_fill.h"
@@ -25,7 +27,9 @@ namespace holefill {
 
 struct HoleFillOptions {
   ParamMethod method = ParamMethod::Auto;      // NP for height-field-like holes, else MVC
-  Continuity continuity = Continuity::G1;
+  Continuity continuity = Continuity::G1;      // the most any edge is asked for (see edge_continuity.h)
+  std::map<int, Continuity> edgeContinuity;    // explicit per-edge requests by 1-based model edge index
+  EdgeContinuityOptions edges;                 // creases found at the loop's corners are asked G0
   double tolerance = 0.0;           // G0 tolerance, model units; 0 means 1e-6 x hole scale (DESIGN strict tier)
   double angularTolerance = 1e-3;   // G1 tolerance, radians
   double curvatureTolerance = 0.1;  // G2 tolerance, relative
@@ -60,7 +64,10 @@ struct HoleFillResult {
   Hole hole;
   int holeIndex = -1;            // 0-based index among detectHoles(model).holes, -1 for an outer boundary
   ContinuityReport report;
-  std::string requested, achieved;  // "G0".."G2"; achieved may be "none"
+  std::string requested, achieved;  // "G0".."G2"; achieved may be "none": the highest k every edge reaches
+                                    // as far as it was asked (min(k, asked)), so a crease at G0 does not lower it
+  std::vector<EdgeRequest> edgeRequests;  // per loop edge: what was asked and why
+  std::vector<int> edgeReached;           // per loop edge (same order): highest level reached, -1 none
   double g0Tolerance = 0;           // model units, as applied
   int polesU = 0, polesV = 0, refinements = 0, samples = 0;
   std::vector<std::string> warnings;

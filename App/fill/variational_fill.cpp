@@ -181,9 +181,10 @@ Errors measure(const std::vector<LocalBasis>& basis, const Eigen::VectorXd& x, i
     double e1 = 0.0, e2 = 0.0;
     Eigen::Vector3d n;
     const bool ok = unitNormal(j, n);
-    if (c.normalValid[k] && o.continuity >= Continuity::G1)
+    const int ord = c.orderAt(k, o.continuity);
+    if (c.normalValid[k] && ord >= 1)
       e1 = ok ? std::acos(std::min(1.0, std::abs(n.dot(c.normal[k])))) : M_PI / 2;
-    if (c.normalValid[k] && second && ok) {
+    if (c.normalValid[k] && ord == 2 && ok) {
       const double kf = normalCurvature(j, n.dot(c.normal[k]) < 0 ? Eigen::Vector3d(-n) : n, c.across[k]);
       e2 = std::abs(kf - c.curvature[k]) / std::max(std::abs(c.curvature[k]), 1.0);
     }
@@ -224,6 +225,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
                                            std::vector<double> U, std::vector<double> V,
                                            const VariationalFillOptions& o) {
   HF_CHECK(c.size() >= 6, "the fill needs at least 6 boundary samples");
+  HF_CHECK(c.order.empty() || c.order.size() == c.size(), "one continuity order per boundary sample");
   HF_CHECK(u1 > u0 && v1 > v0, "the fill domain is empty");
   for (size_t k = 0; k < c.size(); ++k)
     if (!c.uv[k].allFinite() || !c.point[k].allFinite() || !std::isfinite(c.curvature[k]))
@@ -261,7 +263,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       const LocalBasis& b = basis[k];
       for (int d = 0; d < 3; ++d)
         sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.point[k](d), rowWeight(o.positionWeight, b.n, k), true, int(k)});
-      if (o.continuity >= Continuity::G1 && c.normalValid[k]) {
+      if (c.orderAt(k, o.continuity) >= 1 && c.normalValid[k]) {
         sys.rows.push_back({b.su, b.sv, b.nu, c.normal[k], 0.0, rowWeight(o.normalWeight, b.nu, k), true, int(k)});
         sys.rows.push_back({b.su, b.sv, b.nv, c.normal[k], 0.0, rowWeight(o.normalWeight, b.nv, k), true, int(k)});
       }
@@ -272,7 +274,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     // the fill leaves the boundary where the support would continue.
     if (o.continuity >= Continuity::G1 && o.tangentGuideWeight > 0)
       for (size_t k = 0; k < c.size(); ++k) {
-        if (!c.normalValid[k]) continue;
+        if (!c.normalValid[k] || c.orderAt(k, o.continuity) < 1) continue;
         const size_t a = (k > 0 && c.edge[k - 1] == c.edge[k]) ? k - 1 : k;
         const size_t b = (k + 1 < c.size() && c.edge[k + 1] == c.edge[k]) ? k + 1 : k;
         const Eigen::Vector2d t = c.uv[b] - c.uv[a];
@@ -300,7 +302,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       if (cr > 0) {
         // Linearize the cross-boundary normal curvature about the current surface.
         for (size_t k = 0; k < c.size(); ++k) {
-          if (!c.normalValid[k]) continue;
+          if (!c.normalValid[k] || c.orderAt(k, o.continuity) < 2) continue;
           const SurfaceJet j = jetAt(basis[k], x, sys.nv, false);
           const Eigen::Vector2d ab = parameterDirection(j, c.across[k]);
           const double len2 = (ab(0) * j.su + ab(1) * j.sv).squaredNorm();

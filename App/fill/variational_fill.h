@@ -43,9 +43,14 @@ struct FillConstraints {
   std::vector<double> weight;            // arc-length weights
   std::vector<bool> normalValid;
   std::vector<int> edge;                 // boundary edge of each sample (pcurve tangents stay within an edge)
+  std::vector<int> order;                // continuity imposed at each sample (0..2, at most the options'); empty: the options'
   std::vector<Eigen::Vector2d> referenceUV;   // optional soft interior reference points
   std::vector<Eigen::Vector3d> referenceXYZ;
   size_t size() const { return uv.size(); }
+  // The continuity order imposed at sample k under `highest` (a crease edge's samples ask G0 only).
+  int orderAt(size_t k, Continuity highest) const {
+    return order.empty() ? static_cast<int>(highest) : std::min(order[k], static_cast<int>(highest));
+  }
 };
 
 struct VariationalFillOptions {

@@ -52,7 +52,8 @@ auto guarded(F&& f) -> decltype(f()) {
 
 py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
                const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
-               int maxControlPoints, const std::function<bool(double)>& progress, bool sew) {
+               int maxControlPoints, const std::function<bool(double)>& progress, bool sew,
+               const std::string& edgeContinuity, bool detectCreases) {
   return guarded([&] {
     const TopoDS_Shape model = shapeFromBrepString(brep);
     HoleFillOptions o;
@@ -64,6 +65,8 @@ py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std
     if (maxControlPoints > 0) o.solver.maxControlPoints = maxControlPoints;
     o.progress = progress;
     o.sew = sew;
+    if (!edgeContinuity.empty()) o.edgeContinuity = parseEdgeContinuity(edgeContinuity);
+    o.edges.detectCreases = detectCreases;
     const HoleFillResult r = fillHole(model, edges, o);
     const std::string face = r.face.IsNull() ? "" : shapeToBrepString(r.face);
     const std::string shape = r.shape.IsNull() ? "" : shapeToBrepString(r.shape);
@@ -141,6 +144,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   m.def("fillHole", &fill, py::arg("brep"), py::arg("edges"), py::arg("method") = "auto", py::arg("continuity") = "G1",
         py::arg("tolerance") = 0.0, py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1,
         py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
+        py::arg("edgeContinuity") = "", py::arg("detectCreases") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
   m.def("uvtranSurface", [](const std::string& brep, const std::vector<int>& edges, const std::string& weights) {
     return guarded([&] {

@@ -106,7 +106,8 @@ def _edgeIndices(shape, hole):
 
 
 def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False):
+             curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None,
+             detectCreases=True):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
@@ -116,6 +117,10 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     continuity: "G0", "G1" or "G2"; tolerance (model units, 0 = 1e-6 x hole size) for G0,
     angularTolerance (radians) for G1, curvatureTolerance (relative) for G2.
     progress: callable(fraction) -> bool; return False to cancel.
+    continuity is the most any edge is asked for: edges where the loop's corners show the model
+    was sharp (creases) are asked G0 unless detectCreases is False; edgeContinuity, e.g.
+    {"Edge5": "G0", "Edge7": "G1"}, sets edges explicitly. report["edge_continuity"] lists per
+    edge what was asked, why (request, crease, override) and what was reached.
     Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
     The report says what was achieved; a fill that misses the request is returned with
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
@@ -124,9 +129,10 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     if continuity not in CONTINUITIES:
         raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
     edges = _edgeIndices(shape, hole)
+    spec = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in (edgeContinuity or {}).items())
     face, model, rep = HoleFillApp.fillHole(_brep(shape), edges, method, continuity, float(tolerance),
                                            float(angularTolerance), float(curvatureTolerance),
-                                           int(maxControlPoints), progress, bool(sewn))
+                                           int(maxControlPoints), progress, bool(sewn), spec, bool(detectCreases))
     report = json.loads(rep)
     if report["status"] in ("failed", "cancelled"):
         where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
