@@ -8,6 +8,8 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopExp.hxx>
+#include <algorithm>
 #include <Standard_Failure.hxx>
 #include <chrono>
 #include <cmath>
@@ -104,6 +106,30 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       if (q.source == "crease")
         r.warnings.push_back("Edge" + std::to_string(q.edgeIndex) + " is a crease (its support is " +
                              std::to_string(q.cornerMismatch * 180 / M_PI) + " deg off the corner plane): asked G0 there");
+    // Pre-existing state: the neighbours as the user's model has them (and the whole model when asked).
+    {
+      TopTools_IndexedMapOfShape modelFaces;
+      TopExp::MapShapes(model, TopAbs_FACE, modelFaces);
+      std::vector<int> checked;
+      for (const auto& he : r.hole.edges) {
+        if (std::find(checked.begin(), checked.end(), he.supportIndex) != checked.end()) continue;
+        checked.push_back(he.supportIndex);
+        if (he.supportIndex >= 1 && he.supportIndex <= modelFaces.Extent() &&
+            !BRepCheck_Analyzer(modelFaces(he.supportIndex)).IsValid())
+          r.invalidBefore.push_back(he.supportIndex);
+      }
+      if (opt.checkModel)
+        for (int f = 1; f <= modelFaces.Extent(); ++f)
+          if (std::find(checked.begin(), checked.end(), f) == checked.end() && !BRepCheck_Analyzer(modelFaces(f)).IsValid())
+            r.invalidBefore.push_back(f);
+      std::sort(r.invalidBefore.begin(), r.invalidBefore.end());
+      if (!r.invalidBefore.empty()) {
+        std::string names;
+        for (int f : r.invalidBefore) names += (names.empty() ? "Face" : ", Face") + std::to_string(f);
+        r.warnings.push_back("the input model was already invalid before the fill (BRepCheck) at " + names +
+                             "; the fill is judged on the faces it changes");
+      }
+    }
     r.timings.detect = since(t);
     auto cancelled = [&] {
       r.status = FillStatus::Cancelled;
@@ -209,7 +235,19 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       t = Clock::now();
       r.faultyEdges.clear();
       r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
-      r.shapeValid = opt.sew ? BRepCheck_Analyzer(r.shape).IsValid() : r.faceValid;
+      // The model is judged on what the fill changed: the new face and the neighbours whose edges
+      // received its pcurves, each of them only if it was valid before (an imported model is often
+      // invalid somewhere, which no fill can be blamed for, nor can it tell from a whole-model check).
+      r.shapeValid = r.faceValid;
+      if (opt.sew)
+        for (size_t i = 0; i < r.hole.edges.size(); ++i) {
+          const int f = r.hole.edges[i].supportIndex;
+          if (std::find(r.invalidBefore.begin(), r.invalidBefore.end(), f) != r.invalidBefore.end()) continue;
+          if (!BRepCheck_Analyzer(hole.edges[i].support).IsValid()) {
+            r.shapeValid = false;
+            r.warnings.push_back("Face" + std::to_string(f) + " (a neighbour of the hole) is not valid after the fill (BRepCheck)");
+          }
+        }
       r.report = continuityReport(r.face, hole);
       // Per edge: the highest level reached. The fill reaches k when every edge reaches k, or as
       // much as was asked of it where that is less than the request (a crease asked G0).
@@ -330,6 +368,7 @@ std::string toJson(const HoleFillResult& r) {
   j.endArray();
   writeJsonFields(j, r.report);
   j.field("g0_tolerance", r.g0Tolerance);
+  j.field("invalid_before", r.invalidBefore);
   j.field("face_valid", r.faceValid).field("shape_valid", r.shapeValid).field("closed_solid", r.closedSolid);
   j.field("volume", r.volume).field("poles_u", r.polesU).field("poles_v", r.polesV).field("refinements", r.refinements);
   j.field("boundary_samples", r.samples);

@@ -39,6 +39,8 @@ struct HoleFillOptions {
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
   double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
   bool sew = true;                  // also build the model with the face sewn in
+  bool checkModel = false;          // also list every face of the input that BRepCheck finds invalid
+                                    // (costs a whole-model check; the fill itself is judged locally)
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel
 };
 
@@ -60,7 +62,9 @@ struct HoleFillResult {
   TopoDS_Shape shape;            // the model copy with the face sewn in
   bool closedSolid = false;
   double volume = 0.0;
-  bool faceValid = false, shapeValid = false;  // BRepCheck_Analyzer
+  bool faceValid = false, shapeValid = false;  // BRepCheck_Analyzer: the new face; it and the neighbours it changed
+  std::vector<int> invalidBefore;  // 1-based faces of the input BRepCheck found invalid before the fill
+                                   // (the hole's neighbours; with checkModel every face)
   Hole hole;
   int holeIndex = -1;            // 0-based index among detectHoles(model).holes, -1 for an outer boundary
   ContinuityReport report;
