@@ -3,6 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -164,4 +170,30 @@ TEST(HoleFill, AutoPicksPlaneProjectionOnlyOverHeightFields) {
   EXPECT_EQ(cap.status, FillStatus::Ok) << cap.message;
   EXPECT_TRUE(cap.closedSolid);
   EXPECT_GT(cap.volume, M_PI * 10 * 10 * 30);  // the dome adds to the cylinder's volume
+}
+
+// Issue 20, imperfect models: a model that BRepCheck finds invalid elsewhere (a bow-tie face far
+// from the hole, as imported models often carry) is filled, judged on the faces the fill changed,
+// and the report names the pre-existing problem.
+TEST(HoleFill, InvalidModelElsewhereIsFilledAndThePreExistingProblemNamed) {
+  BRep_Builder B;
+  TopoDS_Compound model;
+  B.MakeCompound(model);
+  B.Add(model, samples::boxMinusFace());
+  BRepBuilderAPI_MakePolygon bow(gp_Pnt(0, 0, -500), gp_Pnt(10, 10, -500), gp_Pnt(10, 0, -500), gp_Pnt(0, 10, -500), Standard_True);
+  const TopoDS_Face bad = BRepBuilderAPI_MakeFace(bow.Wire(), Standard_True).Face();
+  ASSERT_FALSE(BRepCheck_Analyzer(bad).IsValid());
+  B.Add(model, bad);
+  ASSERT_FALSE(BRepCheck_Analyzer(model).IsValid());
+  HoleFillOptions o;
+  o.checkModel = true;
+  const HoleFillResult r = fillHole(model, 0, o);
+  EXPECT_EQ(r.status, FillStatus::Ok) << r.message;
+  EXPECT_TRUE(r.faceValid && r.shapeValid);
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(model, TopAbs_FACE, faces);
+  EXPECT_EQ(r.invalidBefore, std::vector<int>{faces.FindIndex(bad)});
+  bool named = false;
+  for (const auto& w : r.warnings) named = named || w.find("already invalid before the fill") != std::string::npos;
+  EXPECT_TRUE(named);
 }
