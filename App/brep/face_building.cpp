@@ -79,7 +79,7 @@ FaceBuildResult buildTrimmedFace(const Hole& hole, const Handle(Geom_BSplineSurf
   return res;
 }
 
-SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face) {
+SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face, bool computeVolume) {
   // The faces connected to the new face through shared edges form its shell.
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(model, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
@@ -122,9 +122,11 @@ SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face) {
     if (ms.IsDone()) {
       TopoDS_Solid solid = ms.Solid();
       BRepLib::OrientClosedSolid(solid);
-      GProp_GProps props;
-      BRepGProp::VolumeProperties(solid, props);
-      res.volume = props.Mass();
+      if (computeVolume) {
+        GProp_GProps props;
+        BRepGProp::VolumeProperties(solid, props);
+        res.volume = props.Mass();
+      }
       res.closedSolid = true;
       main = solid;
     }

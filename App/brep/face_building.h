@@ -32,9 +32,11 @@ FaceBuildResult buildTrimmedFace(const Hole& hole, const Handle(Geom_BSplineSurf
 struct SewResult {
   TopoDS_Shape shape;      // the model with the face added: shell, solid, or compound when the model had other parts
   bool closedSolid = false;
-  double volume = 0.0;     // when closedSolid
+  double volume = 0.0;     // when closedSolid and computeVolume
 };
 
-SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face);
+// computeVolume: the volume of a closed result (a whole-model integration: on a 1.5 MB model it
+// costs more than the fill, so only when asked).
+SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face, bool computeVolume = false);
 
 }  // namespace holefill

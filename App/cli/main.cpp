@@ -55,7 +55,7 @@ const char* kUsage =
     "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...]\n"
     "                [--face-out FACE.brep] [--method auto|np|mvc|uvtran|support] [--continuity G0|G1|G2]\n"
     "                [--tolerance T] [--angular-tolerance RAD] [--weights UVTRAN.pt] [--json]\n"
-    "                [--edge-continuity Edge5=G0,Edge7=G1,...] [--no-crease-detection]\n"
+    "                [--edge-continuity Edge5=G0,Edge7=G1,...] [--no-crease-detection] [--volume] [--check-model]\n"
     "                (creases found at the loop's corners are asked G0 unless --no-crease-detection)\n"
     "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
     "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
@@ -104,7 +104,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection"};  // --no-refine: mesh-fill and gnurbs
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection", "--volume", "--check-model"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -185,6 +185,8 @@ int cmdFill(const Args& a) {
   if (a.has("--angular-tolerance")) o.angularTolerance = number(a.get("--angular-tolerance"), "--angular-tolerance");
   if (a.has("--edge-continuity")) o.edgeContinuity = parseEdgeContinuity(a.get("--edge-continuity"));
   o.edges.detectCreases = !a.has("--no-crease-detection");
+  o.computeVolume = a.has("--volume");
+  o.checkModel = a.has("--check-model");
   TopoDS_Shape shape = readShape(a.input);
   std::vector<HoleFillResult> results;
   if (a.has("--all-holes") || a.get("--hole") == "all") {

@@ -224,7 +224,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       const FaceBuildResult fb = buildTrimmedFace(hole, toOcct(surf), samples, P.uv);
       r.face = fb.face;
       if (opt.sew) {
-        const SewResult sr = sewFace(work, r.face);
+        const SewResult sr = sewFace(work, r.face, opt.computeVolume);
         r.shape = sr.shape;
         r.closedSolid = sr.closedSolid;
         r.volume = sr.volume;

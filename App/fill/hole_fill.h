@@ -39,6 +39,7 @@ struct HoleFillOptions {
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
   double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
   bool sew = true;                  // also build the model with the face sewn in
+  bool computeVolume = false;       // volume of a closed result (costs a whole-model integration)
   bool checkModel = false;          // also list every face of the input that BRepCheck finds invalid
                                     // (costs a whole-model check; the fill itself is judged locally)
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel

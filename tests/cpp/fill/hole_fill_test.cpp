@@ -47,7 +47,9 @@ TEST(HoleFill, G1OnCurvedModelsReachesTheStrictTier) {
 }
 
 TEST(HoleFill, ClosingASolidGivesPositiveFiniteVolume) {
-  const HoleFillResult r = fillHole(samples::filletedBoxCorner(), 0);
+  HoleFillOptions o;
+  o.computeVolume = true;
+  const HoleFillResult r = fillHole(samples::filletedBoxCorner(), 0, o);
   ASSERT_EQ(r.status, FillStatus::Ok) << r.message;
   EXPECT_TRUE(r.closedSolid);
   EXPECT_TRUE(std::isfinite(r.volume));
@@ -165,7 +167,9 @@ TEST(HoleFill, AutoPicksPlaneProjectionOnlyOverHeightFields) {
   // perpendicular to the plane of the loop: MVC, a dome tangent to the cylinder.
   const HoleFillResult panel = fillHole(samples::panelWithHole(6, 11), 0);
   EXPECT_EQ(panel.methodName, "auto:np");
-  const HoleFillResult cap = fillHole(samples::openCylinder(), 0);
+  HoleFillOptions withVolume;
+  withVolume.computeVolume = true;
+  const HoleFillResult cap = fillHole(samples::openCylinder(), 0, withVolume);
   EXPECT_EQ(cap.methodName, "auto:mvc");
   EXPECT_EQ(cap.status, FillStatus::Ok) << cap.message;
   EXPECT_TRUE(cap.closedSolid);
