@@ -55,6 +55,47 @@ def test_closing_a_solid_gives_positive_volume():
     assert math.isfinite(sewn.Volume) and 0.9 * 480000 < sewn.Volume < 480000, sewn.Volume
 
 
+def box_without_fillet():
+    box = Part.makeBox(100, 80, 60)
+    rounded = box.makeFillet(12, [box.Edges[0]])
+    return Part.Shell([f for f in rounded.Faces if f.Surface.__class__.__name__ != "Cylinder"])
+
+
+def test_mixed_crease_loop_asks_g0_on_creases_and_overrides_win():
+    shape = box_without_fillet()
+    hole = HoleFill.findHoles(shape)[0]
+    face, rep = HoleFill.fillHole(shape, hole)
+    assert rep["status"] == "ok" and rep["achieved"] == "G1", rep["message"]
+    per = {e["edge"]: e for e in rep["edge_continuity"]}
+    lines = [i for i in hole["edgeIndices"] if shape.Edges[i - 1].Curve.__class__.__name__ == "Line"]
+    assert len(lines) == 2 and len(per) == 4
+    for i, e in per.items():
+        assert (e["asked"], e["source"]) == (("G1", "request") if i in lines else ("G0", "crease")), e
+        assert e["reached"] in (("G1", "G2") if i in lines else ("G0", "G1", "G2")), e
+    # An explicit request wins over the detection; a request of G1 on a crease cannot be met.
+    arc = [i for i in per if i not in lines][0]
+    _, rep2 = HoleFill.fillHole(shape, hole, edgeContinuity={"Edge%d" % lines[0]: "G0", arc: "G1"})
+    per2 = {e["edge"]: e for e in rep2["edge_continuity"]}
+    assert per2[lines[0]]["asked"] == "G0" and per2[lines[0]]["source"] == "override"
+    assert per2[arc]["asked"] == "G1" and rep2["status"] == "tolerance_not_met" and arc in rep2["faulty_edges"]
+    try:
+        HoleFill.fillHole(shape, hole, edgeContinuity={"Edge99999": "G0"})
+        assert False, "an edge off the loop must be refused"
+    except HoleFill.HoleFillError as e:
+        assert "not on the hole" in str(e)
+
+
+def test_any_pick_order_gives_the_same_face():
+    shape = box_without_fillet()
+    edges = HoleFill.findHoles(shape)[0]["edgeIndices"]
+    ref, _ = HoleFill.fillHole(shape, ["Edge%d" % e for e in edges])
+    for pick in (list(reversed(edges)), [edges[2], edges[0]], [edges[3]], [edges[1], edges[3], edges[0], edges[2]]):
+        face, _ = HoleFill.fillHole(shape, pick)
+        a, b = ref.Surface.getPoles(), face.Surface.getPoles()
+        assert len(a) == len(b) and all(len(r) == len(q) for r, q in zip(a, b)), pick
+        assert max((p - q).Length for r, s in zip(a, b) for p, q in zip(r, s)) <= 1e-12, pick
+
+
 def test_edge_names_select_the_loop():
     shape = load("cc_valence5")
     hole = HoleFill.findHoles(shape)[0]
