@@ -29,9 +29,17 @@ def formatReport(report):
                                                                   report["g2"]),
              "Poles %dx%d after %d refinements; %.2f s" % (report["poles_u"], report["poles_v"], report["refinements"],
                                                           report["timings"]["total"])]
+    creases = [e for e in report.get("edge_continuity", []) if e["source"] == "crease"]
+    if creases:
+        lines.append("Creases (asked G0): " + ", ".join("Edge%d" % e["edge"] for e in creases))
+    if report.get("invalid_before"):
+        lines.append("Already invalid before the fill: " + ", ".join("Face%d" % f for f in report["invalid_before"]))
     if report["faulty_edges"]:
         lines.append("Worst edges: " + ", ".join("Edge%d" % e for e in report["faulty_edges"]))
     return "\n".join(lines)
+
+
+EDGE_CHOICES = ("auto", "G0", "G1", "G2")  # auto: the panel's continuity, G0 where a crease is found
 
 
 class FillTaskPanel:
@@ -59,6 +67,14 @@ class FillTaskPanel:
         self.continuity.addItems(["G0", "G1", "G2"])
         self.continuity.setCurrentText("G1")
         lay.addRow("Continuity:", self.continuity)
+        # One row per loop edge: what to ask of it (auto = the continuity above, G0 on creases found
+        # at the hole's corners) and, after a preview, what was asked and reached there.
+        self.edgeTable = QtWidgets.QTableWidget(0, 3)
+        self.edgeTable.setHorizontalHeaderLabels(["Edge", "Ask", "Asked / reached"])
+        self.edgeTable.horizontalHeader().setStretchLastSection(True)
+        self.edgeTable.verticalHeader().setVisible(False)
+        self.edgeTable.setMinimumHeight(110)
+        lay.addRow(self.edgeTable)
         self.tolerance = QtWidgets.QDoubleSpinBox()
         self.tolerance.setDecimals(7)
         self.tolerance.setRange(0.0, 1e3)
@@ -86,11 +102,17 @@ class FillTaskPanel:
             self.continuity.setCurrentText(existing.Continuity)
             self.tolerance.setValue(float(existing.Tolerance))
             self.output.setCurrentText(existing.Output)
-            if existing.Report:
-                self.report.setPlainText(formatReport(json.loads(existing.Report)))
         else:
             self.takeSelection()
         self.showHole()
+        if existing is not None:
+            asked = fill_feature.edgeContinuityDict(getattr(existing, "EdgeContinuity", []))
+            for row in range(self.edgeTable.rowCount()):
+                name = self.edgeTable.item(row, 0).text()
+                if name in asked:
+                    self.edgeTable.cellWidget(row, 1).setCurrentText(asked[name])
+            if existing.Report:
+                self.showReport(json.loads(existing.Report))
 
     def takeSelection(self):
         src, edges = _selectedHole()
@@ -113,9 +135,37 @@ class FillTaskPanel:
             self.report.setPlainText(str(e))
         if hole is None:
             self.holeLabel.setText("%s: %s is not on one hole loop" % (self.source.Label, ", ".join(self.edges)))
+            self.edgeTable.setRowCount(0)
         else:
             self.holeLabel.setText("%s: %d-sided hole, %d edges (%s)" % (
                 self.source.Label, hole["corners"], len(hole["edges"]), ", ".join(hole["edges"])))
+            if [self.edgeTable.item(r, 0).text() for r in range(self.edgeTable.rowCount())] != hole["edges"]:
+                self.edgeTable.setRowCount(len(hole["edges"]))
+                for row, name in enumerate(hole["edges"]):
+                    item = QtWidgets.QTableWidgetItem(name)
+                    item.setFlags(item.flags() & ~QtCore.Qt.ItemIsEditable)
+                    self.edgeTable.setItem(row, 0, item)
+                    ask = QtWidgets.QComboBox()
+                    ask.addItems(list(EDGE_CHOICES))
+                    self.edgeTable.setCellWidget(row, 1, ask)
+                    self.edgeTable.setItem(row, 2, QtWidgets.QTableWidgetItem(""))
+
+    def edgeRequests(self):
+        """The Ask column as EdgeContinuity entries (["Edge5=G0", ...]; auto rows are left out)."""
+        out = []
+        for row in range(self.edgeTable.rowCount()):
+            ask = self.edgeTable.cellWidget(row, 1).currentText()
+            if ask != "auto":
+                out.append("%s=%s" % (self.edgeTable.item(row, 0).text(), ask))
+        return out
+
+    def showReport(self, report):
+        self.report.setPlainText(formatReport(report))
+        per = {"Edge%d" % e["edge"]: e for e in report.get("edge_continuity", [])}
+        for row in range(self.edgeTable.rowCount()):
+            e = per.get(self.edgeTable.item(row, 0).text())
+            text = "" if e is None else "%s (%s) / %s" % (e["asked"], e["source"], e["reached"])
+            self.edgeTable.setItem(row, 2, QtWidgets.QTableWidgetItem(text))
 
     def updateProjection(self, *args):
         from HoleFillGui import projection_overlay
@@ -144,6 +194,7 @@ class FillTaskPanel:
         self.obj.Continuity = self.continuity.currentText()
         self.obj.Tolerance = self.tolerance.value()
         self.obj.Output = self.output.currentText()
+        self.obj.EdgeContinuity = self.edgeRequests()
         dlg = QtWidgets.QProgressDialog("Filling hole...", "Cancel", 0, 100, self.form)
         dlg.setWindowModality(QtCore.Qt.WindowModal)
         dlg.setMinimumDuration(500)
@@ -161,7 +212,7 @@ class FillTaskPanel:
             fill_feature.progressHook = None
             dlg.close()
         if self.obj.isValid() and self.obj.Report:
-            self.report.setPlainText(formatReport(json.loads(self.obj.Report)))
+            self.showReport(json.loads(self.obj.Report))
             if self.source.ViewObject is not None and self.obj.Output == "Sewn":
                 self.source.ViewObject.Visibility = False
             return True
@@ -173,7 +224,7 @@ class FillTaskPanel:
         o = self.obj
         return (o.Method != self.method.currentText() or o.Continuity != self.continuity.currentText() or
                 abs(float(o.Tolerance) - self.tolerance.value()) > 0 or o.Output != self.output.currentText() or
-                list(o.Source[1]) != list(self.edges))
+                list(o.Source[1]) != list(self.edges) or list(o.EdgeContinuity) != self.edgeRequests())
 
     def accept(self):
         if self.obj is None or not self.obj.isValid() or "Touched" in self.obj.State or self._changedSincePreview():

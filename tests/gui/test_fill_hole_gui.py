@@ -56,6 +56,15 @@ def body():
     labels = [w.text() for w in mw.findChildren(QtWidgets.QLabel) if w.isVisible() and "hole" in w.text()]
     h.log("task panel: %s" % labels)
     assert any("6-sided hole" in t for t in labels), labels
+    # The edge list: one row per loop edge, each with its Ask column; ask G0 of the clicked edge.
+    tables = [t for t in mw.findChildren(QtWidgets.QTableWidget) if t.isVisible() and t.columnCount() == 3]
+    assert tables and tables[0].rowCount() == 6, [t.rowCount() for t in tables]
+    table = tables[0]
+    rows = {table.item(r, 0).text(): r for r in range(table.rowCount())}
+    assert set(rows) == set(hole.edges), rows
+    table.cellWidget(rows[name], 1).setCurrentText("G0")
+    h.pump(200)
+    mw.grab().save(h.shot("gui_fill_1b_panel.png"))
     oks[0].click()
     h.pump(3000)
     fills = [o for o in doc.Objects if o.Name.startswith("Fill")]
@@ -64,6 +73,11 @@ def body():
     assert fill.isValid() and fill.Shape.isValid(), fill.getStatusString()
     assert fill.Status == "ok" and fill.G1 <= 1e-3, (fill.Status, fill.G1)
     assert sorted(fill.Source[1]) == [name]
+    assert list(fill.EdgeContinuity) == ["%s=G0" % name], fill.EdgeContinuity
+    import json
+    per = {"Edge%d" % e["edge"]: e for e in json.loads(fill.Report)["edge_continuity"]}
+    assert per[name]["asked"] == "G0" and per[name]["source"] == "override", per[name]
+    assert all(e["asked"] == "G1" for n, e in per.items() if n != name), per
     assert src.Shape.isValid() and len(src.Shape.Faces) == 1  # the source is untouched
     # Undo removes the fill in one step (it was one transaction).
     view.viewIsometric()

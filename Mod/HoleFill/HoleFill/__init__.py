@@ -168,14 +168,16 @@ def continuityReport(face, shape, hole=None):
 
 
 def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             output="Face", doc=None):
+             output="Face", doc=None, edgeContinuity=None):
     """Create a parametric Fill object on `source` (a document object with a Shape).
     edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.
+    edgeContinuity: per-edge requests as in fillHole, kept in the EdgeContinuity property.
     The object recomputes when the source changes; the source is never modified.
     Runs inside an undo transaction; on failure the document is left as it was and
     HoleFillError is raised."""
     from HoleFill import fill_feature
-    return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc)
+    return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc,
+                                 edgeContinuity)
 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402

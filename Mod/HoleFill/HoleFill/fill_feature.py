@@ -14,6 +14,17 @@ from HoleFill.transaction import ensureProperty
 progressHook = None
 
 
+def edgeContinuityDict(entries):
+    """["Edge5=G0", ...] (the EdgeContinuity property) -> {"Edge5": "G0", ...}."""
+    out = {}
+    for item in entries or []:
+        name, sep, value = item.partition("=")
+        if not sep:
+            raise HoleFill.HoleFillError("EdgeContinuity entry '%s': write Edge5=G0" % item)
+        out[name.strip()] = value.strip()
+    return out
+
+
 class FillFeature:
     def __init__(self, obj):
         obj.Proxy = self
@@ -35,6 +46,8 @@ class FillFeature:
             obj.Continuity = "G1"
         add("App::PropertyLength", "Tolerance", "Fill", "G0 tolerance (0: 1e-6 of the hole size)", 0.0)
         add("App::PropertyFloat", "AngularTolerance", "Fill", "G1 tolerance in radians", 1e-3)
+        add("App::PropertyStringList", "EdgeContinuity", "Fill",
+            "Per-edge requests like Edge5=G0 (other edges: Continuity, creases found at the corners G0)")
         add("App::PropertyEnumeration", "Output", "Fill", "Face: the patch alone; Sewn: the source with the patch sewn in")
         if not obj.getEnumerationsOfProperty("Output"):
             obj.Output = ["Face", "Sewn"]
@@ -57,7 +70,8 @@ class FillFeature:
         edges = [s for s in subs if s.startswith("Edge")] or 1
         res = HoleFill.fillHole(src.Shape, edges, method=obj.Method, continuity=obj.Continuity,
                                 tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
-                                sewn=obj.Output == "Sewn", progress=progressHook)
+                                sewn=obj.Output == "Sewn", progress=progressHook,
+                                edgeContinuity=edgeContinuityDict(obj.EdgeContinuity))
         obj.Shape = res[1] if obj.Output == "Sewn" else res[0]
         report = res[-1]
         obj.Status = report["status"]
@@ -75,7 +89,7 @@ class FillFeature:
 
 
 def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             output="Face", doc=None):
+             output="Face", doc=None, edgeContinuity=None):
     if source is None or not hasattr(source, "Shape"):
         raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
     doc = doc or source.Document
@@ -94,6 +108,8 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
         obj.Tolerance = tolerance
         obj.AngularTolerance = angularTolerance
         obj.Output = output
+        obj.EdgeContinuity = ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
+                              for e, c in (edgeContinuity or {}).items()]
         if FreeCAD.GuiUp:
             from HoleFillGui import view_provider
             view_provider.FillViewProvider(obj.ViewObject)
