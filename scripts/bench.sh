@@ -21,6 +21,10 @@
 #  7. holefill_bench_thb: adaptive THB fitting vs uniform B-spline refinement on a region of the
 #     Stanford bunny (CGAL's bunny00.off) as a bare cloud: error against degrees of freedom, with
 #     a picture (bench-out/thb/thb_bunny.png). BENCH_ONLY=thb runs part 7 alone.
+#  8. tests/bench/bench_corpus.py in freecadcmd: the whole `holefill fill` CLI (auto, np, mvc, uvtran)
+#     vs FreeCAD Surface Filling on the B-rep hole corpus (scripts/make_corpus.sh: every eligible
+#     face of the real models in occt-misc and freecad-common removed, judged per edge against the
+#     removed face). BENCH_ONLY=corpus runs part 8 alone (BENCH_CORPUS_EVERY=k for every k-th hole).
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -58,6 +62,21 @@ bench_thb() {
     echo
   done
 }
+bench_corpus() {
+  export CORPUS_OUT="$root/corpus-out/brep"
+  [ -f "$CORPUS_OUT/index.json" ] || "$root/scripts/make_corpus.sh"
+  (
+    . tests/fcenv.sh "$build/Mod/HoleFill"
+    BENCH_CORPUS="$CORPUS_OUT" HOLEFILL_CLI="$build/App/holefill" freecadcmd tests/bench/bench_corpus.py 2>&1 |
+      grep -v '^ *#\|^$\|Juergen\|licensed\|wouldn.t be possible\|Libs:\|Recompute\|(100 %)\|(50 %)'
+    rm -rf "$HOME"
+  )
+}
+if [ "${BENCH_ONLY:-}" = corpus ]; then  # BENCH_ONLY=corpus runs part 8 alone
+  bench_corpus
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = thb ]; then  # BENCH_ONLY=thb runs part 7 alone
   bench_thb
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
@@ -113,4 +132,5 @@ echo
 bench_fitting
 bench_cloud_params
 bench_thb
+bench_corpus
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

@@ -32,6 +32,9 @@ expect_error "bad method" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --met
 expect_error "bad continuity" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --continuity G7
 expect_error "bad edge name" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge0
 expect_error "edges not on a hole" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge9999
+expect_error "edge continuity malformed" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edge-continuity Edge3
+expect_error "edge continuity bad level" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edge-continuity Edge3=G5
+expect_error "edge continuity off the loop" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edge-continuity Edge9999=G0
 expect_error "hole out of range" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --hole 7
 expect_error "no hole: closed box" 1 fill "$T/closed_box.brep" --out "$T/o.brep"
 expect_error "unknown verb" 1 frobnicate

@@ -22,5 +22,8 @@ check "report: G1 reached at the strict tier" \
 check "the written model has no hole left" "grep -q 'no holes' $T/after.txt"
 "$H" fill "$T/sheet_two_holes.brep" --hole all --out "$T/both.brep" >"$T/both.txt"
 check "--hole all fills both holes of a sheet" "[ \$(grep -c '^hole' $T/both.txt) = 2 ] && \"$H\" holes $T/both.brep | grep -q 'no holes'"
+"$H" fill "$T/panel_6_sided.brep" --edges "$edge" --edge-continuity "$edge=G0" --out "$T/ec.brep" --json >"$T/ec.json"
+check "--edge-continuity asks G0 of $edge, G1 of the others, and says so per edge" \
+  "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))[0]; p={\"Edge%d\" % e[\"edge\"]: e for e in r[\"edge_continuity\"]}; assert r[\"status\"]==\"ok\" and p[sys.argv[2]][\"asked\"]==\"G0\" and p[sys.argv[2]][\"source\"]==\"override\" and all(e[\"asked\"]==\"G1\" for k, e in p.items() if k != sys.argv[2])' $T/ec.json $edge"
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
