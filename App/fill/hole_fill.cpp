@@ -12,9 +12,11 @@
 #include <algorithm>
 #include <Standard_Failure.hxx>
 #include <chrono>
+#include <future>
 #include <cmath>
 
 #include "brep/face_building.h"
+#include "fill/bending_energy.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "geometry/tolerances.h"
@@ -172,8 +174,106 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       r.timings.sample += since(t);
 
       stage = FillStage::Parameterize;
+      r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
+      VariationalFillOptions so = opt.solver;
+      so.continuity = highest;
+      // The solver meets slightly tighter targets at its samples than the report checks between them.
+      so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
+      so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
+      so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
+      // One candidate: parameterize, then solve. Worker threads get no progress callback (it may
+      // be a Python callable, which only the calling thread may run).
+      auto attempt = [&](ParamMethod m, bool report) {
+        FillAttempt a;
+        a.method = m;
+        const auto ta = Clock::now();
+        try {
+          a.P = parameterize(hole, unit, m, opt.parameterization);
+          a.method = a.P.chosen;
+          a.parameterizeSeconds = since(ta);
+          FillConstraints c;
+          for (size_t k = 0; k < unit.size(); ++k) {
+            c.uv.push_back(a.P.uv[k]);
+            c.point.push_back(unit[k].point);
+            c.normal.push_back(unit[k].normal);
+            c.across.push_back(unit[k].across);
+            c.curvature.push_back(unit[k].curvature);
+            c.weight.push_back(unit[k].weight);
+            c.normalValid.push_back(unit[k].normalValid);
+            c.edge.push_back(unit[k].edge);
+            c.order.push_back(static_cast<int>(r.edgeRequests[unit[k].edge].asked));
+          }
+          c.referenceUV = a.P.interiorUV;
+          c.referenceXYZ = a.P.interiorXYZ;
+          VariationalFillOptions sa = so;
+          if (report) sa.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
+          a.vf = solveVariationalFill(c, a.P.u0, a.P.u1, a.P.v0, a.P.v1, a.P.knotsU, a.P.knotsV, sa);
+          a.level = a.vf.g0 > so.g0Tolerance ? -1 : (highest >= Continuity::G1 && a.vf.g1 > so.g1Tolerance) ? 0
+                  : (highest == Continuity::G2 && a.vf.g2 > so.g2Tolerance) ? 1 : static_cast<int>(highest);
+          a.ratio = a.vf.g0 / so.g0Tolerance;
+          if (highest >= Continuity::G1) a.ratio = std::max(a.ratio, a.vf.g1 / so.g1Tolerance);
+          if (highest == Continuity::G2) a.ratio = std::max(a.ratio, a.vf.g2 / so.g2Tolerance);
+          a.energy = trimmedBendingEnergy(a.vf.surface, a.P.uv);
+          a.ok = true;
+        } catch (const Error& e) {
+          a.error = e.what();
+        } catch (const Standard_Failure& e) {
+          a.error = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+        }
+        a.seconds = since(ta);
+        return a;
+      };
       t = Clock::now();
-      const Parameterization P = parameterize(hole, unit, opt.method, opt.parameterization);
+      std::vector<FillAttempt> tried;
+      if (opt.method == ParamMethod::Auto && opt.fillByResult && density == 1) {
+        // Fill by result: NP and MVC side by side (MVC in a second thread), UVTran as well when
+        // neither met the tolerances at its samples and the time budget allows; the best achieved
+        // level wins, then the lower bending energy, then the smaller worst error.
+        // Auto's own choice first: it refuses a planar loop whose projection folds (self-intersecting),
+        // which MVC alone would map onto its N-gon and fill as if it were a hole.
+        parameterize(hole, unit, ParamMethod::Auto, opt.parameterization);
+        auto mvc = std::async(std::launch::async, attempt, ParamMethod::MeanValue, false);
+        tried.push_back(attempt(ParamMethod::NearestPlane, false));
+        tried.push_back(mvc.get());
+        const bool met = std::any_of(tried.begin(), tried.end(), [](const FillAttempt& a) { return a.ok && a.vf.toleranceMet; });
+        if (!met && opt.autoUvtran && (opt.autoTimeBudget <= 0 || since(t0) < opt.autoTimeBudget)) {
+          FillAttempt u = attempt(ParamMethod::Uvtran, false);
+          if (u.ok && u.method == ParamMethod::Uvtran) tried.push_back(std::move(u));  // not MVC again
+        }
+        if (!progress(0.85)) return cancelled();
+      } else {
+        tried.push_back(attempt(density == 1 ? opt.method : r.chosenMethod, true));
+      }
+      auto better = [](const FillAttempt& a, const FillAttempt& b) {
+        if (a.ok != b.ok) return a.ok;
+        if (a.level != b.level) return a.level > b.level;
+        if (a.vf.toleranceMet && b.vf.toleranceMet) return a.energy < b.energy;
+        return a.ratio < b.ratio;
+      };
+      size_t best = 0;
+      for (size_t i = 1; i < tried.size(); ++i)
+        if (better(tried[i], tried[best])) best = i;
+      for (const auto& a : tried) {
+        r.timings.parameterize += a.parameterizeSeconds;
+        r.timings.solve += a.seconds - a.parameterizeSeconds;
+      }
+      if (density == 1) r.candidates = tried;
+      FillAttempt& win = tried[best];
+      if (!win.ok) {
+        stage = win.P.uv.empty() ? FillStage::Parameterize : FillStage::Solve;
+        throw Error(win.error);
+      }
+      if (tried.size() > 1 && density == 1) {
+        std::string why = "auto: " + toString(win.method) + " won (";
+        for (const auto& a : tried)
+          if (&a != &win)
+            why += toString(a.method) + (a.ok ? (a.level < win.level ? " reached less" : a.level > win.level ? " reached more" :
+                   " energy " + std::to_string(a.energy) + " vs " + std::to_string(win.energy)) : " failed: " + a.error.substr(0, 80)) + "; ";
+        r.warnings.push_back(why.substr(0, why.size() - 2) + ")");
+      }
+      r.chosenMethod = win.method;
+      const Parameterization& P = win.P;
+      const VariationalFillResult& vf = win.vf;
       if (density == 1)
         for (const auto& w : P.warnings) r.warnings.push_back(w);
       if (P.chosen != opt.method) r.methodName = toString(opt.method) + ":" + toString(P.chosen);
@@ -182,34 +282,8 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
         for (int i = 0; i < r.projectionSurface.poles.rows(); ++i)
           r.projectionSurface.poles.row(i) = (centre + scale * P.projectionSurface.poles.row(i).transpose()).transpose();
       }
-      r.timings.parameterize += since(t);
       if (!progress(0.1)) return cancelled();
-
       stage = FillStage::Solve;
-      t = Clock::now();
-      FillConstraints c;
-      for (size_t k = 0; k < unit.size(); ++k) {
-        c.uv.push_back(P.uv[k]);
-        c.point.push_back(unit[k].point);
-        c.normal.push_back(unit[k].normal);
-        c.across.push_back(unit[k].across);
-        c.curvature.push_back(unit[k].curvature);
-        c.weight.push_back(unit[k].weight);
-        c.normalValid.push_back(unit[k].normalValid);
-        c.edge.push_back(unit[k].edge);
-        c.order.push_back(static_cast<int>(r.edgeRequests[unit[k].edge].asked));
-      }
-      c.referenceUV = P.interiorUV;
-      c.referenceXYZ = P.interiorXYZ;
-      r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
-      VariationalFillOptions so = opt.solver;
-      so.continuity = highest;
-      // The solver meets slightly tighter targets at its samples than the report checks between them.
-      so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
-      so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
-      so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
-      so.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
-      const VariationalFillResult vf = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, so);
       for (const auto& w : vf.warnings) r.warnings.push_back(w);
       if (vf.cancelled) return cancelled();
       BSplineSurface surf = vf.surface;
@@ -217,7 +291,6 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       r.polesU = surf.numU();
       r.polesV = surf.numV();
       r.refinements = vf.refinements;
-      r.timings.solve += since(t);
 
       stage = FillStage::Build;
       t = Clock::now();
@@ -357,6 +430,18 @@ std::string toJson(const HoleFillResult& r) {
   j.field("method", r.methodName).field("requested", r.requested).field("achieved", r.achieved);
   j.field("hole", r.holeIndex + 1).field("corners", r.hole.corners).field("edges", r.hole.edgeIndices());
   j.field("faulty_edges", r.faultyEdges);
+  j.key("candidates").beginArray();
+  for (const auto& a : r.candidates) {
+    j.beginObject().field("method", toString(a.method)).field("ok", a.ok);
+    if (a.ok) {
+      j.field("level_at_samples", a.level).field("tolerance_met_at_samples", a.vf.toleranceMet);
+      j.field("g0", a.vf.g0).field("g1", a.vf.g1).field("g2", a.vf.g2).field("bending_energy", a.energy);
+    } else {
+      j.field("error", a.error);
+    }
+    j.field("seconds", a.seconds).endObject();
+  }
+  j.endArray();
   j.key("edge_continuity").beginArray();
   for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
     const EdgeRequest& q = r.edgeRequests[i];

@@ -26,7 +26,7 @@
 namespace holefill {
 
 struct HoleFillOptions {
-  ParamMethod method = ParamMethod::Auto;      // NP for height-field-like holes, else MVC
+  ParamMethod method = ParamMethod::Auto;      // Auto: fill by result (fillByResult), see FillAttempt
   Continuity continuity = Continuity::G1;      // the most any edge is asked for (see edge_continuity.h)
   std::map<int, Continuity> edgeContinuity;    // explicit per-edge requests by 1-based model edge index
   EdgeContinuityOptions edges;                 // creases found at the loop's corners are asked G0
@@ -38,6 +38,10 @@ struct HoleFillOptions {
   ParameterizationOptions parameterization;
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
   double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
+  bool fillByResult = true;         // Auto solves NP and MVC (two threads) and keeps the better result;
+                                    // false: Auto picks one of them beforehand (parameterizer.h)
+  bool autoUvtran = true;           // ... and UVTran too when neither met the tolerances at its samples
+  double autoTimeBudget = 2.0;      // seconds: UVTran is not started after this (0: no limit)
   bool sew = true;                  // also build the model with the face sewn in
   bool computeVolume = false;       // volume of a closed result (costs a whole-model integration)
   bool checkModel = false;          // also list every face of the input that BRepCheck finds invalid
@@ -52,6 +56,19 @@ std::string toString(FillStage s);
 
 struct FillTimings {
   double detect = 0, sample = 0, parameterize = 0, solve = 0, build = 0, check = 0, total = 0;  // seconds
+};
+
+// One parameterize + solve of a hole (Auto tries several; the best is built and checked).
+struct FillAttempt {
+  ParamMethod method = ParamMethod::Auto;  // the method used
+  bool ok = false;
+  std::string error;
+  Parameterization P;
+  VariationalFillResult vf;
+  int level = -1;            // continuity level met at the samples (-1: G0 missed)
+  double ratio = 0;          // worst error / its tolerance at the samples
+  double energy = 0;         // trimmedBendingEnergy of the solved surface (normalized units)
+  double seconds = 0, parameterizeSeconds = 0;
 };
 
 struct HoleFillResult {
@@ -77,7 +94,9 @@ struct HoleFillResult {
   int polesU = 0, polesV = 0, refinements = 0, samples = 0;
   std::vector<std::string> warnings;
   FillTimings timings;
-  std::string methodName;           // "uvtran:mvc" when a request fell back
+  std::string methodName;           // "uvtran:mvc" when a request fell back, "auto:np" for the one Auto kept
+  ParamMethod chosenMethod = ParamMethod::Auto;
+  std::vector<FillAttempt> candidates;  // what Auto tried (one entry for a named method)
   BSplineSurface projectionSurface; // UVTran's predicted projection surface (model units), when it was used
 };
 

@@ -8,7 +8,8 @@ G1 is not asked. Strict = G0 <= 1e-6 x scale everywhere and G1 <= 1e-3 rad on th
 G2 <= 0.1 is judged on holes whose truth is G2 on every edge. "fail" = no face (the CLI exited 2,
 crashed or timed out; GeomPlate's recompute gave no valid face).
 
-  BENCH_CORPUS=DIR (corpus-out/brep)  BENCH_CORPUS_EVERY=k (every k-th hole, 1)
+  BENCH_CORPUS=DIR (corpus-out/brep)  BENCH_CORPUS_EVERY=k (every k-th hole, 1) from BENCH_CORPUS_OFFSET (0)
+  BENCH_CORPUS_MERGE="a.json b.json": no run, the tables of earlier runs' results together (shards)
   BENCH_CORPUS_METHODS=auto,np,mvc,uvtran  BENCH_CORPUS_CONTINUITY=G1  BENCH_GEOMPLATE=1
 Run by scripts/bench.sh (BENCH_ONLY=corpus) inside freecadcmd; writes $BENCH_OUT/bench_corpus.json/.md."""
 import collections
@@ -29,6 +30,8 @@ import HoleFill
 OUT = os.environ.get("BENCH_OUT", "/tmp")
 CORPUS = os.environ.get("BENCH_CORPUS", "corpus-out/brep")
 EVERY = int(os.environ.get("BENCH_CORPUS_EVERY", "1"))
+OFFSET = int(os.environ.get("BENCH_CORPUS_OFFSET", "0"))
+MERGE = os.environ.get("BENCH_CORPUS_MERGE", "").split()
 METHODS = os.environ.get("BENCH_CORPUS_METHODS", "auto,np,mvc,uvtran").split(",")
 CONTINUITY = os.environ.get("BENCH_CORPUS_CONTINUITY", "G1")
 GEOMPLATE = os.environ.get("BENCH_GEOMPLATE", "1") == "1"
@@ -75,10 +78,12 @@ def run_geomplate(doc, shape, hole, truth, order):
     doc.recompute()
     dt = time.time() - t
     try:
-        if not f.isValid() or f.Shape.isNull() or len(f.Shape.Faces) != 1 or not f.Shape.Faces[0].isValid():
-            return {"ok": False, "time": dt, "error": f.getStatusString()}
+        produced = f.isValid() and not f.Shape.isNull() and len(f.Shape.Faces) == 1
+        if not produced or not f.Shape.Faces[0].isValid():
+            return {"ok": False, "time": dt, "produced": produced,
+                    "error": "face produced but not valid (BRepCheck)" if produced else f.getStatusString()}
         rep = HoleFill.continuityReport(f.Shape.Faces[0], shape, hole)
-        r = {"ok": True, "time": dt, "core": dt}
+        r = {"ok": True, "time": dt, "core": dt, "produced": True}
         r.update(judge(rep["per_edge"], truth, rep["g0_relative"]))
         return r
     except Exception as e:
@@ -106,11 +111,29 @@ HEADER = ["| method | holes | fail | strict G0+G1 | loose | G2 <= 0.1 (G2 surrou
 
 def main():
     index = json.load(open(os.path.join(CORPUS, "index.json")))
-    holes = index["holes"][::EVERY]
+    t0 = time.time()
+    if MERGE:
+        results, labels = [], None
+        for path in MERGE:
+            d = json.load(open(path))
+            results += d["results"]
+            labels = labels or d["labels"]
+        holes = results
+        scope = "%d holes from %d runs (%s) of the %d-hole corpus" % (len(results), len(MERGE), " ".join(MERGE),
+                                                                   len(index["holes"]))
+    else:
+        holes = index["holes"][OFFSET::EVERY]
+        scope = "%d holes (every %d-th from %d of %d)" % (len(holes), EVERY, OFFSET, len(index["holes"]))
+        results = run(holes)
+        labels = list(METHODS) + (["geomplate"] if GEOMPLATE else [])
+    summarize(results, labels, "Corpus: %s, continuity %s, %s, %.0f s." % (scope, CONTINUITY, platform.node(),
+                                                                         time.time() - t0))
+
+
+def run(holes):
     doc = FreeCAD.newDocument("BenchCorpus")
     labels = list(METHODS) + (["geomplate"] if GEOMPLATE else [])
     results = []
-    t0 = time.time()
     for k, truth in enumerate(holes):
         path = os.path.join(CORPUS, truth["id"], "hole.brep")
         res = {"id": truth["id"], "kind": truth["kind"], "N": truth["N"], "surround": truth["surround"],
@@ -127,11 +150,16 @@ def main():
             "%s %s" % (m, ("%.0e/%.0e" % (res[m]["g0r"], res[m]["g1_tangent"])) if res[m]["ok"] else "FAIL")
             for m in labels)))
         sys.stdout.flush()
+    with open(os.path.join(OUT, "bench_corpus.json"), "w") as f:
+        json.dump({"results": results, "continuity": CONTINUITY, "labels": labels}, f, indent=1)
+    return results
+
+
+def summarize(results, labels, title):
     for res in results:
         for m in labels:
             res[m]["surround"] = res["surround"]
-    lines = ["Corpus: %d holes (every %d-th of %d), continuity %s, %s, %.0f s." % (
-        len(holes), EVERY, len(index["holes"]), CONTINUITY, platform.node(), time.time() - t0), ""] + HEADER
+    lines = [title, ""] + HEADER
     for m in labels:
         lines.append(row(m, [r[m] for r in results]))
     for key, title in (("kind", "surface kind"), ("N", "N")):
@@ -149,12 +177,14 @@ def main():
         for m in labels:
             if not r[m]["ok"]:
                 fails[(m, r[m].get("error", "invalid face")[:90])] += 1
+    if "geomplate" in labels:
+        lines += ["", "Holes where GeomPlate produced a face (valid or not) and ours failed: " + ", ".join(
+            "%s %d" % (m, sum(1 for r in results if r["geomplate"].get("produced") and not r[m]["ok"]))
+            for m in labels if m != "geomplate")]
     lines += ["", "Failures by message:", ""] + ["- %s: %d x %s" % (m, n, e) for (m, e), n in fails.most_common(30)]
     md = "\n".join(lines)
     print()
     print(md)
-    with open(os.path.join(OUT, "bench_corpus.json"), "w") as f:
-        json.dump({"results": results, "continuity": CONTINUITY}, f, indent=1)
     with open(os.path.join(OUT, "bench_corpus.md"), "w") as f:
         f.write(md + "\n")
 

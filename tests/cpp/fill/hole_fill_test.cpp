@@ -162,18 +162,33 @@ TEST(HoleFill, JsonReportHasTheDesignFields) {
     EXPECT_NE(j.find(k), std::string::npos) << k;
 }
 
-TEST(HoleFill, AutoPicksPlaneProjectionOnlyOverHeightFields) {
-  // A gently curved panel: NP. The open end of a cylinder, whose support normals are
-  // perpendicular to the plane of the loop: MVC, a dome tangent to the cylinder.
-  const HoleFillResult panel = fillHole(samples::panelWithHole(6, 11), 0);
-  EXPECT_EQ(panel.methodName, "auto:np");
-  HoleFillOptions withVolume;
-  withVolume.computeVolume = true;
-  const HoleFillResult cap = fillHole(samples::openCylinder(), 0, withVolume);
-  EXPECT_EQ(cap.methodName, "auto:mvc");
-  EXPECT_EQ(cap.status, FillStatus::Ok) << cap.message;
-  EXPECT_TRUE(cap.closedSolid);
-  EXPECT_GT(cap.volume, M_PI * 10 * 10 * 30);  // the dome adds to the cylinder's volume
+TEST(HoleFill, AutoFillsByResultAndKeepsTheBestCandidate) {
+  // Issue 20, fill by result: Auto solves NP and MVC and keeps the one that reached more at its
+  // samples, then the one with the lower bending energy; the report lists both.
+  for (const TopoDS_Shape& shape : {samples::panelWithHole(6, 11), samples::openCylinder()}) {
+    HoleFillOptions withVolume;
+    withVolume.computeVolume = true;
+    const HoleFillResult r = fillHole(shape, 0, withVolume);
+    EXPECT_EQ(r.status, FillStatus::Ok) << r.message;
+    ASSERT_GE(r.candidates.size(), 2u);
+    EXPECT_EQ(r.candidates[0].method, ParamMethod::NearestPlane);
+    EXPECT_EQ(r.candidates[1].method, ParamMethod::MeanValue);
+    const FillAttempt* won = nullptr;
+    for (const auto& a : r.candidates)
+      if (a.method == r.chosenMethod) won = &a;
+    ASSERT_NE(won, nullptr);
+    EXPECT_EQ(r.methodName, "auto:" + toString(r.chosenMethod));
+    for (const auto& a : r.candidates)
+      if (a.ok && a.level == won->level && a.vf.toleranceMet) EXPECT_LE(won->energy, a.energy);
+    EXPECT_GT(won->energy, 0.0);
+    if (r.closedSolid) EXPECT_GT(r.volume, M_PI * 10 * 10 * 30);  // the cylinder's cap adds volume
+  }
+  // Without fill by result Auto picks beforehand: NP over the gently curved panel, MVC over the
+  // cylinder's open end, whose support normals are perpendicular to the loop's plane.
+  HoleFillOptions pick;
+  pick.fillByResult = false;
+  EXPECT_EQ(fillHole(samples::panelWithHole(6, 11), 0, pick).methodName, "auto:np");
+  EXPECT_EQ(fillHole(samples::openCylinder(), 0, pick).methodName, "auto:mvc");
 }
 
 // Issue 20, imperfect models: a model that BRepCheck finds invalid elsewhere (a bow-tie face far
