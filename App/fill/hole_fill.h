@@ -38,9 +38,10 @@ struct HoleFillOptions {
   ParameterizationOptions parameterization;
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
   double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
-  bool fillByResult = true;         // Auto solves NP and MVC (two threads) and keeps the better result;
-                                    // false: Auto picks one of them beforehand (parameterizer.h)
-  bool autoUvtran = true;           // ... and UVTran too when neither met the tolerances at its samples
+  bool fillByResult = true;         // Auto solves its pick (parameterizer.h), then the other of NP/MVC when
+                                    // the pick misses the tolerances at its samples, and keeps the better;
+                                    // false: Auto's pick alone
+  bool autoUvtran = true;           // ... and UVTran too when both missed
   double autoTimeBudget = 2.0;      // seconds: UVTran is not started after this (0: no limit)
   bool sew = true;                  // also build the model with the face sewn in
   bool computeVolume = false;       // volume of a closed result (costs a whole-model integration)
