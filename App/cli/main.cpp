@@ -113,7 +113,9 @@ Args parse(int argc, char** argv) {
     if (s.rfind("--", 0) == 0) {
       const auto eq = s.find('=');
       if (eq != std::string::npos) { a.opt[s.substr(0, eq)] = s.substr(eq + 1); continue; }
-      if (std::find(flags.begin(), flags.end(), s) != flags.end()) { a.opt[s] = "1"; continue; }
+      // --faces is fit-points' flag but render's list of faces.
+      const bool flag = std::find(flags.begin(), flags.end(), s) != flags.end() && !(s == "--faces" && a.verb != "fit-points");
+      if (flag) { a.opt[s] = "1"; continue; }
       if (i + 1 >= argc) throw Error("option " + s + " needs a value");
       a.opt[s] = argv[++i];
     } else if (a.input.empty()) {

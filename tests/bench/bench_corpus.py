@@ -10,6 +10,7 @@ crease is G2 (a "G2 surround"). "fail" = no face (the CLI exited 2,
 crashed or timed out; GeomPlate's recompute gave no valid face).
 
   BENCH_CORPUS=DIR (corpus-out/brep)  BENCH_CORPUS_EVERY=k (every k-th hole, 1) from BENCH_CORPUS_OFFSET (0)
+  BENCH_FILL_ARGS="--no-crease-detection": extra `holefill fill` arguments for every fill
   BENCH_CORPUS_MERGE="a.json b.json": no run, the tables of earlier runs' results together (shards)
   BENCH_CORPUS_ONLY=g2 (the G2 surrounds only)  BENCH_CORPUS_METHODS=auto,np,mvc,uvtran  BENCH_CORPUS_CONTINUITY=G1  BENCH_GEOMPLATE=1
 Run by scripts/bench.sh (BENCH_ONLY=corpus) inside freecadcmd; writes $BENCH_OUT/bench_corpus.json/.md."""
@@ -37,6 +38,7 @@ METHODS = os.environ.get("BENCH_CORPUS_METHODS", "auto,np,mvc,uvtran").split(","
 CONTINUITY = os.environ.get("BENCH_CORPUS_CONTINUITY", "G1")
 GEOMPLATE = os.environ.get("BENCH_GEOMPLATE", "1") == "1"
 CLI = os.environ.get("HOLEFILL_CLI", "holefill")
+EXTRA = os.environ.get("BENCH_FILL_ARGS", "").split()  # e.g. --no-crease-detection, for a row without it
 TIMEOUT = 120
 
 
@@ -53,7 +55,7 @@ def run_ours(path, truth, method):
         out = os.path.join(tmp, "out.brep")
         t = time.time()
         try:
-            p = subprocess.run([CLI, "fill", path, "--out", out, "--method", method, "--continuity", CONTINUITY, "--json"],
+            p = subprocess.run([CLI, "fill", path, "--out", out, "--method", method, "--continuity", CONTINUITY, "--json"] + EXTRA,
                                capture_output=True, text=True, timeout=TIMEOUT)
         except subprocess.TimeoutExpired:
             return {"ok": False, "time": TIMEOUT, "error": "timeout"}
@@ -124,8 +126,8 @@ def main():
                                                                    len(index["holes"]))
     else:
         holes = index["holes"][OFFSET::EVERY]
-    if os.environ.get("BENCH_CORPUS_ONLY") == "g2":  # the G2 surrounds alone (with BENCH_CORPUS_CONTINUITY=G2)
-        holes = [h for h in holes if surround(h) == "g2"]
+        if os.environ.get("BENCH_CORPUS_ONLY") == "g2":  # the G2 surrounds alone (with BENCH_CORPUS_CONTINUITY=G2)
+            holes = [h for h in holes if surround(h) == "g2"]
         scope = "%d holes (every %d-th from %d of %d)" % (len(holes), EVERY, OFFSET, len(index["holes"]))
         results = run(holes)
         labels = list(METHODS) + (["geomplate"] if GEOMPLATE else [])

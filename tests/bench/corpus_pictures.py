@@ -20,9 +20,8 @@ IDS = os.environ.get("CORPUS_PICTURES", "").split()
 def render(shape, faces, path, view):
     tmp = path + ".brep"
     shape.exportBrep(tmp)
-    subprocess.run([CLI, "render", tmp, "--out", path, "--mode", "zebra", "--size", "640x480", "--faces",
-                    ",".join(str(f) for f in faces), "--view", view, "--stripes", "16"], check=False,
-                   capture_output=True)
+    subprocess.run([CLI, "render", tmp, "--out", path, "--mode", "zebra", "--size", "640x480", "--faces=" + ",".join(str(f) for f in faces), "--view", view, "--stripes", "16"], check=False,
+                   capture_output=True, text=True)
     os.remove(tmp)
 
 
