@@ -29,6 +29,9 @@ import Part
 
 import HoleFill
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
+from geomplate import surface_filling  # noqa: E402
+
 OUT = os.environ.get("BENCH_OUT", "/tmp")
 CORPUS = os.environ.get("BENCH_CORPUS", "corpus-out/brep")
 EVERY = int(os.environ.get("BENCH_CORPUS_EVERY", "1"))
@@ -70,16 +73,7 @@ def run_ours(path, truth, method):
 
 
 def run_geomplate(doc, shape, hole, truth, order):
-    src = doc.addObject("Part::Feature", "Model")
-    src.Shape = shape
-    doc.recompute()
-    f = doc.addObject("Surface::Filling", "Filling")
-    f.BoundaryEdges = [(src, e) for e in hole["edges"]]
-    f.BoundaryFaces = ["Face%d" % i for i in hole["supportFaces"]]
-    f.BoundaryOrder = [order] * len(hole["edges"])
-    t = time.time()
-    doc.recompute()
-    dt = time.time() - t
+    f, dt = surface_filling(doc, shape, hole, order)
     try:
         produced = f.isValid() and not f.Shape.isNull() and len(f.Shape.Faces) == 1
         if not produced or not f.Shape.Faces[0].isValid():

@@ -5,11 +5,15 @@ scripts/bench.sh after the corpus benchmark: CORPUS_PICTURES="id1 id2 ...".
 Each picture shows the filled face and its neighbours only (--faces), seen along the mean normal."""
 import os
 import subprocess
+import sys
 
 import FreeCAD
 import Part
 
 import HoleFill
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
+from geomplate import surface_filling  # noqa: E402
 
 CORPUS = os.environ.get("BENCH_CORPUS", "corpus-out/brep")
 OUT = os.path.join(os.environ.get("BENCH_OUT", "/tmp"), "corpus")
@@ -57,14 +61,7 @@ def main():
             print("%s ours %s %s g0r %.1e g1 %.1e" % (hid, rep["status"], rep["method"], rep["g0_relative"], rep["g1"]))
         except HoleFill.HoleFillError as e:
             print("%s ours failed: %s" % (hid, e))
-        src = doc.addObject("Part::Feature", "Model")
-        src.Shape = holed
-        doc.recompute()
-        f = doc.addObject("Surface::Filling", "Filling")
-        f.BoundaryEdges = [(src, e) for e in hole["edges"]]
-        f.BoundaryFaces = ["Face%d" % i for i in hole["supportFaces"]]
-        f.BoundaryOrder = [1] * len(hole["edges"])
-        doc.recompute()
+        f, _ = surface_filling(doc, holed, hole, 1)
         if f.isValid() and not f.Shape.isNull() and f.Shape.Faces:
             plate = Part.Compound(holed.Faces + [f.Shape.Faces[0]])
             render(plate, near(plate, centre, radius), os.path.join(OUT, hid + "_geomplate.png"), view)
