@@ -207,11 +207,8 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
           VariationalFillOptions sa = so;
           if (report) sa.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
           a.vf = solveVariationalFill(c, a.P.u0, a.P.u1, a.P.v0, a.P.v1, a.P.knotsU, a.P.knotsV, sa);
-          a.level = a.vf.g0 > so.g0Tolerance ? -1 : (highest >= Continuity::G1 && a.vf.g1 > so.g1Tolerance) ? 0
-                  : (highest == Continuity::G2 && a.vf.g2 > so.g2Tolerance) ? 1 : static_cast<int>(highest);
-          a.ratio = a.vf.g0 / so.g0Tolerance;
-          if (highest >= Continuity::G1) a.ratio = std::max(a.ratio, a.vf.g1 / so.g1Tolerance);
-          if (highest == Continuity::G2) a.ratio = std::max(a.ratio, a.vf.g2 / so.g2Tolerance);
+          a.level = a.vf.levelMet;
+          a.ratio = a.vf.worstRatio;
           a.energy = trimmedBendingEnergy(a.vf.surface, a.P.uv);
           a.ok = true;
         } catch (const Error& e) {
@@ -222,7 +219,6 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
         a.seconds = since(ta);
         return a;
       };
-      t = Clock::now();
       std::vector<FillAttempt> tried;
       if (opt.method == ParamMethod::Auto && opt.fillByResult && density == 1) {
         // Fill by result: Auto's own pick first (it also refuses a planar loop whose projection folds,
@@ -312,10 +308,12 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       // received its pcurves, each of them only if it was valid before (an imported model is often
       // invalid somewhere, which no fill can be blamed for, nor can it tell from a whole-model check).
       r.shapeValid = r.faceValid;
+      std::vector<int> checked = r.invalidBefore;  // each neighbour once, and none that was invalid before
       if (opt.sew)
         for (size_t i = 0; i < r.hole.edges.size(); ++i) {
           const int f = r.hole.edges[i].supportIndex;
-          if (std::find(r.invalidBefore.begin(), r.invalidBefore.end(), f) != r.invalidBefore.end()) continue;
+          if (std::find(checked.begin(), checked.end(), f) != checked.end()) continue;
+          checked.push_back(f);
           if (!BRepCheck_Analyzer(hole.edges[i].support).IsValid()) {
             r.shapeValid = false;
             r.warnings.push_back("Face" + std::to_string(f) + " (a neighbour of the hole) is not valid after the fill (BRepCheck)");

@@ -372,6 +372,8 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
   res.g2 = bestErr.g2;
   res.violatingSamples = bestErr.violating;
   res.toleranceMet = bestErr.violating.empty();
+  res.levelMet = levelMet(bestErr, o);
+  res.worstRatio = worstRatio(bestErr, o);
   return res;
 }
 

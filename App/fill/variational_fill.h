@@ -79,6 +79,8 @@ struct VariationalFillResult {
   BSplineSurface surface;
   double g0 = 0, g1 = 0, g2 = 0;  // max errors at the samples (solve units, radians, relative)
   bool toleranceMet = false;
+  int levelMet = -1;           // highest order met in sequence at the samples: -1 none, 0 G0, 1 G0+G1, 2 all
+  double worstRatio = 0;       // the worst error relative to its tolerance at the samples
   bool cancelled = false;
   int refinements = 0;
   std::vector<int> violatingSamples;
