@@ -33,13 +33,15 @@ std::string ContinuityReport::achieved(double t0, double t1, double t2) const {
 void writeJsonFields(JsonWriter& j, const ContinuityReport& r) {
   j.field("scale", r.scale).field("samples", r.samples);
   j.field("g0", r.g0).field("g0_relative", r.g0Relative).field("g1", r.g1).field("g2", r.g2);
+  j.field("g0_face", r.g0Face).field("g0_face_relative", r.g0FaceRelative).field("edge_tolerance", r.edgeTolerance);
   j.key("str").beginObject();
   j.field("g0_strict", r.g0Strict).field("g0_loose", r.g0Loose).field("g1_strict", r.g1Strict);
   j.field("g1_loose", r.g1Loose).field("g2", r.g2Ok);
   j.endObject();
   j.key("per_edge").beginArray();
   for (const auto& e : r.edges)
-    j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2).endObject();
+    j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2)
+        .field("g0_face", e.g0Face).field("tolerance", e.tolerance).endObject();
   j.endArray();
 }
 
@@ -47,7 +49,11 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
   HF_CHECK(!face.IsNull(), "no face to report on");
   ContinuityReport r;
   r.scale = hole.scale;
-  for (const auto& he : hole.edges) r.edges.push_back({he.edgeIndex, 0, 0, 0});
+  for (const auto& he : hole.edges) {
+    const double tol = BRep_Tool::Tolerance(he.edge);
+    r.edges.push_back({he.edgeIndex, 0, 0, 0, 0, tol});
+    r.edgeTolerance = std::max(r.edgeTolerance, tol);
+  }
   std::vector<BRepAdaptor_Curve> curves;
   std::vector<SupportView> supports;
   for (const auto& he : hole.edges) {
@@ -86,6 +92,8 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
       if (best < 0) continue;
       const double g0 = std::sqrt(bestD);
       double g1 = 0, g2 = 0;
+      const gp_Pnt2d uvB = supports[best].pcurve.Value(bestT);
+      const double g0f = (toEigen(supports[best].surface.Value(uvB.X(), uvB.Y())) - jf.p).norm();
       Eigen::Vector3d nf, nb;
       SurfaceJet jb;
       if (supports[best].regularJet(bestT, jb, nb) && unitNormal(jf, nf)) {
@@ -107,16 +115,19 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
       ++r.samples;
       r.along.push_back({jf.p, hole.edges[best].edgeIndex, g0, g1, g2});
       r.g0 = std::max(r.g0, g0);
+      r.g0Face = std::max(r.g0Face, g0f);
       r.g1 = std::max(r.g1, g1);
       r.g2 = std::max(r.g2, g2);
       auto& ec = r.edges[best];
       ec.g0 = std::max(ec.g0, g0);
+      ec.g0Face = std::max(ec.g0Face, g0f);
       ec.g1 = std::max(ec.g1, g1);
       ec.g2 = std::max(ec.g2, g2);
     }
   }
   if (r.samples == 0) throw Error("the face has no boundary edges to compare with the hole");
   r.g0Relative = r.scale > 0 ? r.g0 / r.scale : r.g0;
+  r.g0FaceRelative = r.scale > 0 ? r.g0Face / r.scale : r.g0Face;
   r.g0Strict = r.g0Relative <= tol::kG0Strict;
   r.g0Loose = r.g0Relative <= tol::kG0Loose;
   r.g1Strict = r.g1 <= tol::kG1Strict;

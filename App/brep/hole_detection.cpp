@@ -64,6 +64,8 @@ double signedTurn(const Eigen::Vector3d& tin, const Eigen::Vector3d& tout, const
   return std::atan2(tin.cross(tout).dot(n), tin.dot(tout));
 }
 
+}  // namespace
+
 void finishHole(Hole& h, const HoleDetectionOptions& opt) {
   const double cornerRad = opt.cornerAngleDeg * M_PI / 180.0;
   Bnd_Box box;
@@ -110,7 +112,6 @@ void finishHole(Hole& h, const HoleDetectionOptions& opt) {
   h.outerBoundary = h.outerScore > opt.outerScoreThreshold;
 }
 
-}  // namespace
 
 HoleDetectionResult detectHoles(const TopoDS_Shape& model, const HoleDetectionOptions& opt) {
   if (model.IsNull()) throw Error("the shape is empty: give a shell, an open solid or a compound of faces");

@@ -63,6 +63,10 @@ struct HoleDetectionResult {
 
 HoleDetectionResult detectHoles(const TopoDS_Shape& model, const HoleDetectionOptions& options = {});
 
+// Completes a hole whose edges (ordered, oriented, with supports) are set: corners and turns,
+// lengths, scale and the outer-boundary score, as detectHoles does for the loops it finds.
+void finishHole(Hole& hole, const HoleDetectionOptions& options = {});
+
 // The hole of `detection` whose loop contains all the given 1-based edge indices; throws if none does.
 const Hole& holeContainingEdges(const HoleDetectionResult& detection, const std::vector<int>& edgeIndices);
 

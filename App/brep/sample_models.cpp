@@ -1,6 +1,7 @@
 #include "brep/sample_models.h"
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -25,10 +26,13 @@
 #include <TColgp_HArray1OfPnt2d.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -174,17 +178,18 @@ TopoDS_Shape ccExtraordinaryHole(int N, int R, double bend, double h, double jit
   return sew(faces, 1e-6 * h);
 }
 
-TopoDS_Shape filletedBoxCorner(double dx, double dy, double dz, double radius) {
+namespace {
+// A box filleted on all its edges, and the index of the corner blend nearest to (dx, dy, dz)
+// (a face that is neither a plane nor a cylinder) among its faces.
+TopoDS_Shape filletedBox(double dx, double dy, double dz, double radius, TopTools_IndexedMapOfShape& faces, int& corner) {
   TopoDS_Shape box = BRepPrimAPI_MakeBox(dx, dy, dz).Shape();
   BRepFilletAPI_MakeFillet fillet(box);
   for (TopExp_Explorer ex(box, TopAbs_EDGE); ex.More(); ex.Next()) fillet.Add(radius, TopoDS::Edge(ex.Current()));
   fillet.Build();
   HF_CHECK(fillet.IsDone(), "OCCT could not fillet the box");
   const TopoDS_Shape solid = fillet.Shape();
-  // The corner blend nearest to (dx, dy, dz): a face that is neither a plane nor a cylinder.
-  TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(solid, TopAbs_FACE, faces);
-  int corner = 0;
+  corner = 0;
   double best = -1e300;
   for (int i = 1; i <= faces.Extent(); ++i) {
     GeomAdaptor_Surface gs(BRep_Tool::Surface(TopoDS::Face(faces(i))));
@@ -195,12 +200,49 @@ TopoDS_Shape filletedBoxCorner(double dx, double dy, double dz, double radius) {
     if (c.X() + c.Y() + c.Z() > best) { best = c.X() + c.Y() + c.Z(); corner = i; }
   }
   HF_CHECK(corner > 0, "the filleted box has no corner blend face");
+  return solid;
+}
+
+TopoDS_Shape shellWithout(const TopoDS_Shape& solid, const std::vector<TopoDS_Shape>& removed) {
   BRep_Builder B;
   TopoDS_Shell shell;
   B.MakeShell(shell);
   for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next())
-    if (!ex.Current().IsSame(faces(corner))) B.Add(shell, ex.Current());
+    if (std::none_of(removed.begin(), removed.end(), [&](const TopoDS_Shape& f) { return f.IsSame(ex.Current()); }))
+      B.Add(shell, ex.Current());
   return shell;
+}
+}  // namespace
+
+TopoDS_Shape filletedBoxCorner(double dx, double dy, double dz, double radius) {
+  TopTools_IndexedMapOfShape faces;
+  int corner = 0;
+  const TopoDS_Shape solid = filletedBox(dx, dy, dz, radius, faces, corner);
+  return shellWithout(solid, {faces(corner)});
+}
+
+TopoDS_Shape filletedBoxAdjacentHoles(TopoDS_Edge* divider) {
+  TopTools_IndexedMapOfShape faces;
+  int corner = 0;
+  const TopoDS_Shape solid = filletedBox(100, 80, 60, 12, faces, corner);
+  // The cylindrical fillet that shares an edge with the corner blend and runs along x (the longest).
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  TopoDS_Shape fillet;
+  TopoDS_Edge shared;
+  double longest = -1;
+  for (TopExp_Explorer ex(faces(corner), TopAbs_EDGE); ex.More(); ex.Next())
+    for (const TopoDS_Shape& f : edgeFaces.FindFromKey(ex.Current())) {
+      if (f.IsSame(faces(corner))) continue;
+      GeomAdaptor_Surface gs(BRep_Tool::Surface(TopoDS::Face(f)));
+      if (gs.GetType() != GeomAbs_Cylinder) continue;
+      GProp_GProps p;
+      BRepGProp::SurfaceProperties(f, p);
+      if (p.Mass() > longest) { longest = p.Mass(); fillet = f; shared = TopoDS::Edge(ex.Current()); }
+    }
+  HF_CHECK(!fillet.IsNull(), "the filleted box's corner blend has no cylindrical neighbour");
+  if (divider) *divider = TopoDS::Edge(BRepBuilderAPI_Copy(shared).Shape());
+  return shellWithout(solid, {faces(corner), fillet});
 }
 
 TopoDS_Shape panelWithHole(int sides, unsigned seed) {

@@ -7,6 +7,7 @@
 // cylinder whose loop meets a seam, a sheet with two holes, a non-manifold fin).
 #pragma once
 
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Shape.hxx>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@ namespace holefill::samples {
 TopoDS_Shape ccExtraordinaryHole(int valence, int rings = 4, double bend = 1.0, double spacing = 10.0,
                                  double jitter = 0.0, unsigned seed = 0);
 TopoDS_Shape filletedBoxCorner(double dx = 100, double dy = 80, double dz = 60, double radius = 12);
+// The same box (100 x 80 x 60, radius 12) without its corner blend and the longest cylindrical fillet
+// next to it: one loop around two adjacent holes; `divider` gets a copy of the edge the two faces
+// shared (no face uses it, as a curve sketched across the hole), which splits the loop into them.
+TopoDS_Shape filletedBoxAdjacentHoles(TopoDS_Edge* divider = nullptr);
 // B-spline panel (100 x 100) with an irregular N-sided hole of curved sides; `seed` varies its shape.
 TopoDS_Shape panelWithHole(int sides = 6, unsigned seed = 1);
 // A single-span bicubic (Bezier) face with an irregular 5-sided hole: filling it on the exact pcurves reproduces it.

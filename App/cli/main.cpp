@@ -3,12 +3,15 @@
 // stderr, nothing written); 2 the fill failed (nothing written); 3 the fill was
 // written but did not reach the requested continuity (the report says what it reached).
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Builder.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -23,6 +26,7 @@
 #include "brep/sample_models.h"
 #include "brep/shape_io.h"
 #include "brep/thb_faces.h"
+#include "fill/adjacent_holes.h"
 #include "fill/hole_fill.h"
 #include "geometry/text_file.h"
 #include "fitting/cloud_boundary.h"
@@ -57,6 +61,8 @@ const char* kUsage =
     "                [--tolerance T] [--angular-tolerance RAD] [--weights UVTRAN.pt] [--json]\n"
     "                [--edge-continuity Edge5=G0,Edge7=G1,...] [--no-crease-detection] [--volume] [--check-model]\n"
     "                (creases found at the loop's corners are asked G0 unless --no-crease-detection)\n"
+    "                [--divide CURVE.brep]  two adjacent holes: the loop split by the one edge in CURVE.brep\n"
+    "                (running from one loop vertex to another), filled as two faces sharing it\n"
     "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
     "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
     "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
@@ -176,6 +182,52 @@ int cmdHoles(const Args& a) {
   return 0;
 }
 
+// fill --divide: exit codes as for one fill (0 ok, 3 tolerance not met, 2 failed: nothing written).
+int fillAdjacent(const Args& a, const TopoDS_Shape& shape, const HoleFillOptions& o) {
+  if (a.has("--all-holes") || a.get("--hole") == "all") throw Error("--divide splits one hole: name it with --edges or --hole K");
+  const TopoDS_Shape curve = readShape(a.get("--divide"));
+  TopTools_IndexedMapOfShape curveEdges;
+  TopExp::MapShapes(curve, TopAbs_EDGE, curveEdges);
+  if (curveEdges.Extent() != 1)
+    throw Error("--divide " + a.get("--divide") + " must hold one edge (the dividing curve); it holds " +
+                std::to_string(curveEdges.Extent()));
+  std::vector<int> edges;
+  if (a.has("--edges")) {
+    edges = edgeNames(a.get("--edges"));
+  } else {
+    const int k = a.has("--hole") ? static_cast<int>(number(a.get("--hole"), "--hole")) : 1;
+    const HoleDetectionResult det = detectHoles(shape, o.detection);
+    if (k < 1 || k > static_cast<int>(det.holes.size()))
+      throw Error("hole " + std::to_string(k) + " does not exist: the shape has " + std::to_string(det.holes.size()) + " hole(s)");
+    edges = det.holes[k - 1].edgeIndices();
+  }
+  const AdjacentFillResult r = fillAdjacentHoles(shape, edges, TopoDS::Edge(curveEdges(1)), o);
+  const int code = r.status == FillStatus::Ok ? 0 : r.status == FillStatus::ToleranceNotMet ? 3 : 2;
+  if (code != 2) {
+    writeShape(r.shape, a.get("--out"));
+    if (a.has("--face-out")) {
+      TopoDS_Compound faces;
+      BRep_Builder B;
+      B.MakeCompound(faces);
+      B.Add(faces, r.first.face);
+      B.Add(faces, r.second.face);
+      writeShape(faces, a.get("--face-out"));
+    }
+  }
+  if (a.has("--json")) {
+    std::cout << toJson(r) << "\n";
+  } else {
+    for (const HoleFillResult* f : {&r.first, &r.second})
+      if (!f->face.IsNull())
+        std::printf("side (%zu edges): %s, %s; G0 %.3g (%.2g of scale) G1 %.3g rad G2 %.3g; %dx%d poles; %.2f s\n",
+                    f->hole.edges.size(), toString(f->status).c_str(), f->message.c_str(), f->report.g0,
+                    f->report.g0Relative, f->report.g1, f->report.g2, f->polesU, f->polesV, f->timings.total);
+    std::printf("%s: %s\n", toString(r.status).c_str(), r.message.c_str());
+  }
+  if (code == 2) std::fprintf(stderr, "holefill: fill failed: %s\n", r.message.c_str());
+  return code;
+}
+
 int cmdFill(const Args& a) {
   if (a.input.empty()) throw Error("fill: no input file");
   if (!a.has("--out")) throw Error("fill: --out OUT is required");
@@ -190,6 +242,7 @@ int cmdFill(const Args& a) {
   o.computeVolume = a.has("--volume");
   o.checkModel = a.has("--check-model");
   TopoDS_Shape shape = readShape(a.input);
+  if (a.has("--divide")) return fillAdjacent(a, shape, o);
   std::vector<HoleFillResult> results;
   if (a.has("--all-holes") || a.get("--hole") == "all") {
     const size_t n = detectHoles(shape).holes.size();
@@ -540,6 +593,13 @@ int cmdSamples(const Args& a) {
     const std::string path = a.input + "/" + n + ".brep";
     writeShape(samples::byName(n), path);
     std::printf("%s\n", path.c_str());
+  }
+  {
+    TopoDS_Edge divider;
+    const std::string path = a.input + "/filleted_box_adjacent_holes.brep";
+    writeShape(samples::filletedBoxAdjacentHoles(&divider), path);
+    writeShape(divider, a.input + "/filleted_box_adjacent_holes.divider.brep");
+    std::printf("%s\n%s/filleted_box_adjacent_holes.divider.brep\n", path.c_str(), a.input.c_str());
   }
   const std::string mesh = a.input + "/scan_with_holes.obj";
   writeMesh(samples::scanWithHoles(), mesh);

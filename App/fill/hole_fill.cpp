@@ -69,37 +69,46 @@ HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFill
 
 HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& opt) {
   if (model.IsNull()) throw Error("the shape is empty: nothing to fill");
+  const auto t0 = Clock::now();
+  // The new pcurves and tolerances go onto edges the user's shape does not own: a deep copy of
+  // the model when the face is sewn into it, else copies of the hole's edges alone (one copy,
+  // so consecutive edges keep sharing their vertices), which costs nothing on large models.
+  const TopoDS_Shape work = opt.sew ? BRepBuilderAPI_Copy(model, Standard_True, Standard_False).Shape() : model;
+  const HoleDetectionResult det = detectHoles(work, opt.detection);
+  Hole hole = holeContainingEdges(det, holeEdges);
+  if (!opt.sew) {
+    // Copy the support faces (which carry the edges' pcurves), sharing their geometry.
+    BRep_Builder B;
+    TopoDS_Compound supports;
+    B.MakeCompound(supports);
+    TopTools_IndexedMapOfShape seen;
+    for (const auto& he : hole.edges)
+      if (seen.Add(he.support) == seen.Extent()) B.Add(supports, he.support);
+    BRepBuilderAPI_Copy copier(supports, Standard_False, Standard_False);
+    for (auto& he : hole.edges) {
+      he.edge = TopoDS::Edge(copier.ModifiedShape(he.edge).Oriented(he.edge.Orientation()));
+      he.support = TopoDS::Face(copier.ModifiedShape(he.support).Oriented(he.support.Orientation()));
+    }
+  }
+  HoleFillResult r = fillHoleOf(work, hole, opt, since(t0));
+  r.warnings.insert(r.warnings.begin(), det.warnings.begin(), det.warnings.end());
+  for (size_t i = 0; i < det.holes.size(); ++i)
+    if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
+  return r;
+}
+
+HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const HoleFillOptions& opt, double elapsed) {
+  if (work.IsNull()) throw Error("the shape is empty: nothing to fill");
   HoleFillResult r;
   r.requested = toString(opt.continuity);
   r.methodName = toString(opt.method);
-  const auto t0 = Clock::now();
+  const auto t0 = Clock::now() - std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(elapsed));
   FillStage stage = FillStage::Detect;
   auto progress = [&](double f) { return !opt.progress || opt.progress(f); };
+  const TopoDS_Shape& model = work;  // as it is before the fill: the pre-existing state is checked on it
   try {
-    // The new pcurves and tolerances go onto edges the user's shape does not own: a deep copy of
-    // the model when the face is sewn into it, else copies of the hole's edges alone (one copy,
-    // so consecutive edges keep sharing their vertices), which costs nothing on large models.
     auto t = Clock::now();
-    const TopoDS_Shape work = opt.sew ? BRepBuilderAPI_Copy(model, Standard_True, Standard_False).Shape() : model;
-    const HoleDetectionResult det = detectHoles(work, opt.detection);
-    r.warnings = det.warnings;
-    r.hole = holeContainingEdges(det, holeEdges);
-    if (!opt.sew) {
-      // Copy the support faces (which carry the edges' pcurves), sharing their geometry.
-      BRep_Builder B;
-      TopoDS_Compound supports;
-      B.MakeCompound(supports);
-      TopTools_IndexedMapOfShape seen;
-      for (const auto& he : r.hole.edges)
-        if (seen.Add(he.support) == seen.Extent()) B.Add(supports, he.support);
-      BRepBuilderAPI_Copy copier(supports, Standard_False, Standard_False);
-      for (auto& he : r.hole.edges) {
-        he.edge = TopoDS::Edge(copier.ModifiedShape(he.edge).Oriented(he.edge.Orientation()));
-        he.support = TopoDS::Face(copier.ModifiedShape(he.support).Oriented(he.support.Orientation()));
-      }
-    }
-    for (size_t i = 0; i < det.holes.size(); ++i)
-      if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
+    r.hole = givenHole;
     r.edgeRequests = edgeRequests(r.hole, opt.continuity, opt.edgeContinuity, opt.edges);
     Continuity highest = Continuity::G0;
     for (const auto& q : r.edgeRequests) highest = std::max(highest, q.asked, [](Continuity a, Continuity b) { return int(a) < int(b); });
@@ -131,7 +140,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
                              "; the fill is judged on the faces it changes");
       }
     }
-    r.timings.detect = since(t);
+    r.timings.detect = elapsed + since(t);
     auto cancelled = [&] {
       r.status = FillStatus::Cancelled;
       r.failedStage = stage;
@@ -312,7 +321,8 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       if (opt.sew)
         for (size_t i = 0; i < r.hole.edges.size(); ++i) {
           const int f = r.hole.edges[i].supportIndex;
-          if (std::find(checked.begin(), checked.end(), f) != checked.end()) continue;
+          // 0: a support that is not a face of the model (fillAdjacentHoles' provisional face).
+          if (f < 1 || std::find(checked.begin(), checked.end(), f) != checked.end()) continue;
           checked.push_back(f);
           if (!BRepCheck_Analyzer(hole.edges[i].support).IsValid()) {
             r.shapeValid = false;
@@ -354,9 +364,11 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
       } else {
         r.status = FillStatus::Ok;
         r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
-        int creases = 0;
-        for (const auto& q : r.edgeRequests) creases += q.asked < opt.continuity;
+        int creases = 0, lowered = 0;
+        for (const auto& q : r.edgeRequests)
+          if (q.asked < opt.continuity) ++(q.source == "crease" ? creases : lowered);
         if (creases) r.message += "; G0 asked on " + std::to_string(creases) + " crease edge(s)";
+        if (lowered) r.message += "; less than " + r.requested + " asked on " + std::to_string(lowered) + " edge(s)";
       }
       // Met at the samples but not between them: the boundary needs denser samples, once.
       if (r.status != FillStatus::ToleranceNotMet || !vf.toleranceMet || density > 1) break;

@@ -105,6 +105,12 @@ struct HoleFillResult {
 HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& options = {});
 // The hole by 0-based index in detectHoles(model).holes.
 HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& options = {});
+// A hole already found (or assembled, as fillAdjacentHoles does) whose edges and supports belong
+// to `work`. With options.sew the new pcurves go onto those edges and the face is sewn into
+// `work`: it must be the caller's private copy. `elapsed` (seconds already spent finding the
+// hole) is added to the detect timing. holeIndex stays -1.
+HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& hole, const HoleFillOptions& options = {},
+                          double elapsed = 0.0);
 
 // UVTran's projection surface for the hole holding the given edges, in model units (what the
 // "uvtran" method projects the boundary onto), for display. Throws when it cannot be predicted.

@@ -26,6 +26,12 @@ JsonWriter& JsonWriter::key(const std::string& k) {
   return *this;
 }
 
+JsonWriter& JsonWriter::raw(const std::string& json) {
+  separator();
+  out_ << json;
+  return *this;
+}
+
 JsonWriter& JsonWriter::value(const std::string& v) {
   separator();
   writeString(v);

@@ -23,6 +23,8 @@ public:
   JsonWriter& value(bool v);
   JsonWriter& value(const std::vector<int>& v);
   JsonWriter& value(const std::vector<std::string>& v);
+  // A value rendered by another writer (a nested report), inserted as it is.
+  JsonWriter& raw(const std::string& json);
   template <class T> JsonWriter& field(const std::string& k, const T& v) { key(k); return value(v); }
   std::string str() const { return out_.str(); }
 

@@ -273,7 +273,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
       o.samplesPerEdge = samplesPerEdge;
       return continuityTuple(faceContinuity(shapeFromBrepString(brep), a, b, o));
     });
-  }, py::arg("brep"), py::arg("faceA"), py::arg("faceB"), py::arg("samplesPerEdge") = 50,
+  }, py::arg("brep"), py::arg("faceA"), py::arg("faceB"), py::arg("samplesPerEdge") = 200,
      "Continuity of Face<faceB> against Face<faceA> along their shared edges: (JSON, samples k x 6, edge per sample).");
   m.def("continuityAlong", [](const std::string& faceBrep, const std::string& modelBrep, const std::vector<int>& edges) {
     return guarded([&] { return continuityTuple(reportOnHole(faceBrep, modelBrep, edges)); });
