@@ -3,6 +3,10 @@
 // once, in the core), errors leave as HoleFillApp.HoleFillError. OCCT and core
 // exceptions are caught here so FreeCAD never goes down with a bad input.
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
 #include <array>
 #include <chrono>
 #include <map>
@@ -27,6 +31,7 @@
 #include "fitting/cloud_boundary.h"
 #include "fitting/labeled_fit.h"
 #include "gnurbs/cage_io.h"
+#include "fill/adjacent_holes.h"
 #include "gnurbs/gnurbs_brep.h"
 #include "gnurbs/gnurbs_report.h"
 #include "gnurbs/sample_cages.h"
@@ -50,27 +55,64 @@ auto guarded(F&& f) -> decltype(f()) {
   }
 }
 
+HoleFillOptions fillOptions(const std::string& method, const std::string& continuity, double tolerance,
+                            double angularTolerance, double curvatureTolerance, int maxControlPoints,
+                            const std::function<bool(double)>& progress, const std::string& edgeContinuity,
+                            bool detectCreases) {
+  HoleFillOptions o;
+  o.method = paramMethodFromString(method);
+  o.continuity = continuityFromString(continuity);
+  o.tolerance = tolerance;
+  o.angularTolerance = angularTolerance;
+  o.curvatureTolerance = curvatureTolerance;
+  if (maxControlPoints > 0) o.solver.maxControlPoints = maxControlPoints;
+  o.progress = progress;
+  if (!edgeContinuity.empty()) o.edgeContinuity = parseEdgeContinuity(edgeContinuity);
+  o.edges.detectCreases = detectCreases;
+  return o;
+}
+
 py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
                const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
                int maxControlPoints, const std::function<bool(double)>& progress, bool sew,
                const std::string& edgeContinuity, bool detectCreases) {
   return guarded([&] {
     const TopoDS_Shape model = shapeFromBrepString(brep);
-    HoleFillOptions o;
-    o.method = paramMethodFromString(method);
-    o.continuity = continuityFromString(continuity);
-    o.tolerance = tolerance;
-    o.angularTolerance = angularTolerance;
-    o.curvatureTolerance = curvatureTolerance;
-    if (maxControlPoints > 0) o.solver.maxControlPoints = maxControlPoints;
-    o.progress = progress;
+    HoleFillOptions o = fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
+                                    maxControlPoints, progress, edgeContinuity, detectCreases);
     o.sew = sew;
-    if (!edgeContinuity.empty()) o.edgeContinuity = parseEdgeContinuity(edgeContinuity);
-    o.edges.detectCreases = detectCreases;
     const HoleFillResult r = fillHole(model, edges, o);
     const std::string face = r.face.IsNull() ? "" : shapeToBrepString(r.face);
     const std::string shape = r.shape.IsNull() ? "" : shapeToBrepString(r.shape);
     return py::make_tuple(py::bytes(face), py::bytes(shape), toJson(r));
+  });
+}
+
+// (BREP of the two faces as a compound, BREP of the model with both, report JSON).
+py::tuple fillAdjacent(const std::string& brep, const std::vector<int>& edges, const std::string& dividerBrep,
+                       const std::string& method, const std::string& continuity, double tolerance,
+                       double angularTolerance, double curvatureTolerance, int maxControlPoints,
+                       const std::function<bool(double)>& progress) {
+  return guarded([&] {
+    const TopoDS_Shape model = shapeFromBrepString(brep), divider = shapeFromBrepString(dividerBrep);
+    TopTools_IndexedMapOfShape curveEdges;
+    TopExp::MapShapes(divider, TopAbs_EDGE, curveEdges);
+    if (curveEdges.Extent() != 1)
+      throw Error("the dividing curve must be one edge; the shape given has " + std::to_string(curveEdges.Extent()));
+    const AdjacentFillResult r =
+        fillAdjacentHoles(model, edges, TopoDS::Edge(curveEdges(1)),
+                          fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
+                                      maxControlPoints, progress, "", true));
+    std::string faces;
+    if (!r.first.face.IsNull() && !r.second.face.IsNull()) {
+      BRep_Builder B;
+      TopoDS_Compound c;
+      B.MakeCompound(c);
+      B.Add(c, r.first.face);
+      B.Add(c, r.second.face);
+      faces = shapeToBrepString(c);
+    }
+    return py::make_tuple(py::bytes(faces), py::bytes(r.shape.IsNull() ? "" : shapeToBrepString(r.shape)), toJson(r));
   });
 }
 
@@ -146,6 +188,12 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
         py::arg("edgeContinuity") = "", py::arg("detectCreases") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
+  m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"),
+        py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,
+        py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,
+        py::arg("progress") = std::function<bool(double)>(),
+        "Split the hole holding the given edges by the one edge in `divider` (BREP) and fill both sides as two "
+        "faces sharing it: (BREP of the two faces, BREP of the model, report JSON).");
   m.def("uvtranSurface", [](const std::string& brep, const std::vector<int>& edges, const std::string& weights) {
     return guarded([&] {
       HoleFillOptions o;

@@ -28,5 +28,16 @@ check "--edge-continuity asks G0 of $edge, G1 of the others, and says so per edg
 # Regression: `render --faces 1` (space form) is a face list, not fit-points' --faces flag.
 "$H" render "$T/panel_6_sided.brep" --out "$T/faces.png" --size 160x120 --faces 1 >/dev/null 2>"$T/faces.err"
 check "render --faces 1 (space form) draws the listed face" "[ -s $T/faces.png ] && [ ! -s $T/faces.err ]"
+# Two adjacent holes: the loop split by the divider file, two faces sharing it, G1 across.
+"$H" fill "$T/filleted_box_adjacent_holes.brep" --divide "$T/filleted_box_adjacent_holes.divider.brep" \
+  --out "$T/adj.brep" --face-out "$T/adj_faces.brep" --json >"$T/adj.json"
+rc=$?
+check "fill --divide exits 0 and writes the model and both faces" "[ $rc = 0 ] && [ -s $T/adj.brep ] && [ -s $T/adj_faces.brep ]"
+check "fill --divide: two fills, G0/G1 strict across the shared edge, the model closed" \
+  "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); a=r[\"across\"]; assert r[\"status\"]==\"ok\" and len(r[\"fills\"])==2 and r[\"shared_edge\"]>0 and a[\"g0_relative\"]<=1e-6 and a[\"g1\"]<=1e-3 and r[\"fills\"][1][\"closed_solid\"]' $T/adj.json"
+"$H" fill "$T/filleted_box_adjacent_holes.brep" --divide "$T/panel_6_sided.brep" --out "$T/adj_bad.brep" >/dev/null 2>"$T/adj_bad.err"
+rc=$?
+check "fill --divide with a file of many edges exits 1, says why, writes nothing" \
+  "[ $rc = 1 ] && grep -q 'must hold one edge' $T/adj_bad.err && [ ! -e $T/adj_bad.brep ]"
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

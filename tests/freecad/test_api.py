@@ -202,4 +202,23 @@ def test_uvtran_method_projection_surface_and_fallback():
         del os.environ["HOLEFILL_UVTRAN_WEIGHTS"]
 
 
+def test_adjacent_holes_are_two_faces_sharing_the_divider():
+    shape = load("filleted_box_adjacent_holes")
+    divider = load("filleted_box_adjacent_holes.divider").Edges[0]
+    hole = HoleFill.findHoles(shape)[0]
+    (a, b), model, rep = HoleFill.fillAdjacentHoles(shape, hole, divider)
+    assert rep["status"] == "ok", rep["message"]
+    assert model.isValid() and model.ShapeType == "Solid", model.ShapeType
+    shared = [e for e in a.Edges if any(e.isSame(f) for f in b.Edges)]
+    edge = model.Edges[rep["shared_edge"] - 1]
+    users = [f for f in model.Faces if any(e.isSame(edge) for e in f.Edges)]
+    assert len(shared) == 1 and len(users) == 2, (len(shared), len(users))
+    assert abs(edge.Length - shared[0].Length) <= 1e-9 * edge.Length
+    assert rep["across"]["g0_relative"] <= 1e-6 and rep["across"]["g1"] <= 1e-3, rep["across"]
+    assert len(model.Faces) == len(shape.Faces) + 2
+    # A divider that does not end at the loop's vertices is refused, and nothing is returned.
+    stray = Part.makeLine(FreeCAD.Vector(-50, 0, 0), FreeCAD.Vector(-40, 0, 0))
+    fcharness.expect_error(lambda: HoleFill.fillAdjacentHoles(shape, hole, stray), "vertices of the hole's loop")
+
+
 fcharness.run(globals())

@@ -5,6 +5,7 @@ Macro-friendly API (camelCase like FreeCAD's own):
     import HoleFill
     holes = HoleFill.findHoles(obj.Shape)                    # list of Hole
     face, report = HoleFill.fillHole(obj.Shape, holes[0], continuity="G1")
+    (a, b), model, report = HoleFill.fillAdjacentHoles(obj.Shape, holes[0], sketch.Shape.Edges[0])
     print(report["achieved"], report["g0"], report["g1"])
     fill = HoleFill.makeFill(obj, ["Edge3"], method="auto")     # parametric document object
     HoleFill.renderImage(fill.Shape, "/tmp/fill.png", mode="zebra")  # headless inspection picture
@@ -24,7 +25,7 @@ HoleFillError = HoleFillApp.HoleFillError
 METHODS = ("auto", "np", "mvc", "uvtran")
 CONTINUITIES = ("G0", "G1", "G2")
 
-__all__ = ["findHoles", "fillHole", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+__all__ = ["findHoles", "fillHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
            "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
            "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints", "fitLabeled"]
@@ -142,6 +143,30 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     if sewn:
         return f, _shape(model), report
     return f, report
+
+
+def fillAdjacentHoles(shape, hole, divider, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
+                      curvatureTolerance=0.1, maxControlPoints=0, progress=None):
+    """Two adjacent holes: the loop of `hole` (as in fillHole) split by `divider`, an edge (e.g. a
+    sketch's) running across it from one vertex of the loop to another, filled as two faces that
+    share that edge: the first side is asked G0 along it, the second side `continuity` there as on
+    its other edges, so the two faces meet at the second fill's tolerances.
+    Returns ((Part.Face, Part.Face), the model with both faces as a Part.Shape, report); the
+    report holds "fills" (the two sides' reports), "across" (the continuity the two faces share
+    along "shared_edge") and "status". A failed fill raises HoleFillError."""
+    if method not in METHODS:
+        raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
+    if continuity not in CONTINUITIES:
+        raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
+    edges = _edgeIndices(shape, hole)
+    faces, model, rep = HoleFillApp.fillAdjacentHoles(_brep(shape), edges, _brep(divider), method, continuity,
+                                                      float(tolerance), float(angularTolerance),
+                                                      float(curvatureTolerance), int(maxControlPoints), progress)
+    report = json.loads(rep)
+    if report["status"] in ("failed", "cancelled"):
+        raise HoleFillError("adjacent fill %s: %s" % (report["status"], report["message"]))
+    fs = _shape(faces).Faces
+    return (fs[0], fs[1]), _shape(model), report
 
 
 def projectionSurface(shape, hole=1, weights=""):
