@@ -5,6 +5,8 @@
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_TEdge.hxx>
+#include <BRep_TVertex.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
@@ -66,17 +68,46 @@ FaceBuildResult buildTrimmedFace(const Hole& hole, const Handle(Geom_BSplineSurf
     }
     res.maxEdgeDeviation = std::max(res.maxEdgeDeviation, dev);
     const double tol = std::max(BRep_Tool::Tolerance(E), 1.5 * dev + Precision::Confusion());
-    B.UpdateEdge(E, pc, res.face, tol);
-    B.UpdateEdge(E, tol);
+    res.priorEdgeTolerances.push_back(BRep_Tool::Tolerance(E));
     TopoDS_Vertex v0, v1;
     TopExp::Vertices(E, v0, v1);
     for (const TopoDS_Vertex& v : {v0, v1})
-      if (!v.IsNull() && BRep_Tool::Tolerance(v) < tol) B.UpdateVertex(v, tol);
+      if (!v.IsNull()) res.priorVertexTolerances.emplace_back(v, BRep_Tool::Tolerance(v));
+    res.pcurves.push_back(pc);
+    res.edgeTolerances.push_back(tol);
     B.Add(wire, E);
   }
   wire.Closed(Standard_True);
   B.Add(res.face, wire);
+  attachFace(hole, res);
   return res;
+}
+
+void attachFace(const Hole& hole, const FaceBuildResult& built) {
+  HF_CHECK(built.pcurves.size() == hole.edges.size(), "a built face has one pcurve per hole edge");
+  BRep_Builder B;
+  for (size_t k = 0; k < hole.edges.size(); ++k) {
+    const TopoDS_Edge& E = hole.edges[k].edge;
+    const double tol = built.edgeTolerances[k];
+    B.UpdateEdge(E, built.pcurves[k], built.face, tol);
+    if (BRep_Tool::Tolerance(E) < tol) B.UpdateEdge(E, tol);
+    TopoDS_Vertex v0, v1;
+    TopExp::Vertices(E, v0, v1);
+    for (const TopoDS_Vertex& v : {v0, v1})
+      if (!v.IsNull() && BRep_Tool::Tolerance(v) < tol) B.UpdateVertex(v, tol);
+  }
+}
+
+void detachFace(const Hole& hole, const FaceBuildResult& built) {
+  HF_CHECK(built.pcurves.size() == hole.edges.size(), "a built face has one pcurve per hole edge");
+  // BRep_Builder only ever raises tolerances; the TShapes take the old values back directly.
+  BRep_Builder B;
+  for (size_t k = 0; k < hole.edges.size(); ++k) {
+    const TopoDS_Edge& E = hole.edges[k].edge;
+    B.UpdateEdge(E, Handle(Geom2d_Curve)(), built.face, Precision::Confusion());
+    Handle(BRep_TEdge)::DownCast(E.TShape())->Tolerance(built.priorEdgeTolerances[k]);
+  }
+  for (const auto& [v, t] : built.priorVertexTolerances) Handle(BRep_TVertex)::DownCast(v.TShape())->Tolerance(t);
 }
 
 SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face, bool computeVolume) {

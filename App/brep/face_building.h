@@ -7,10 +7,15 @@
 //
 // The model passed in must be the caller's private copy: adding pcurves changes
 // the shared edges (FillHole works on a BRepBuilderAPI_Copy of the user's shape).
+// A face can be taken off its edges again (detachFace: pcurves removed, tolerances
+// put back) and put back on (attachFace), so that several candidate faces can be
+// built and judged on the same edges, one at a time, and only the one kept stays.
 #pragma once
 
 #include <Eigen/Dense>
+#include <Geom2d_Curve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <vector>
@@ -23,11 +28,21 @@ namespace holefill {
 struct FaceBuildResult {
   TopoDS_Face face;
   double maxEdgeDeviation = 0.0;  // max |C(t) - S(pcurve(t))| over dense checks (model units)
+  // What the build put on the hole's edges (per hole edge), and the tolerances it found there.
+  std::vector<Handle(Geom2d_Curve)> pcurves;
+  std::vector<double> edgeTolerances, priorEdgeTolerances;
+  std::vector<std::pair<TopoDS_Vertex, double>> priorVertexTolerances;
 };
 
 // uv[k] is the (model-domain) pcurve point of samples[k]; one pcurve per edge interpolates them in t.
 FaceBuildResult buildTrimmedFace(const Hole& hole, const Handle(Geom_BSplineSurface)& surface,
                                  const std::vector<BoundarySample>& samples, const std::vector<Eigen::Vector2d>& uv);
+
+// Takes the face off the hole's edges: its pcurves removed, edge and vertex tolerances as they
+// were before buildTrimmedFace (only valid while no other face was built on them since).
+void detachFace(const Hole& hole, const FaceBuildResult& built);
+// Puts a detached face back: its pcurves and the tolerances its build set.
+void attachFace(const Hole& hole, const FaceBuildResult& built);
 
 struct SewResult {
   TopoDS_Shape shape;      // the model with the face added: shell, solid, or compound when the model had other parts

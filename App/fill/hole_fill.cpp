@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <Standard_Failure.hxx>
 #include <chrono>
+#include <optional>
 #include <cmath>
 
 #include "brep/face_building.h"
@@ -54,6 +55,93 @@ std::string edgeList(const std::vector<int>& e) {
   std::string s;
   for (int i : e) s += (s.empty() ? "Edge" : ", Edge") + std::to_string(i);
   return s;
+}
+
+int statusRank(FillStatus s) { return s == FillStatus::Ok ? 0 : s == FillStatus::ToleranceNotMet ? 1 : 2; }
+
+// The worst error of a fill's report relative to its tolerance, over what each edge was asked.
+double reportRatio(const HoleFillResult& r, const HoleFillOptions& opt) {
+  double w = 0;
+  for (const EdgeRequest& q : r.edgeRequests)
+    for (const auto& e : r.report.edges)
+      if (e.edgeIndex == q.edgeIndex) {
+        w = std::max(w, e.g0 / r.g0Tolerance);
+        if (q.asked >= Continuity::G1) w = std::max(w, e.g1 / opt.angularTolerance);
+        if (q.asked == Continuity::G2) w = std::max(w, e.g2 / opt.curvatureTolerance);
+      }
+  return w;
+}
+
+// a better than b: a valid face, then a better status, then the smaller worst error ratio.
+bool betterFill(const HoleFillResult& a, const HoleFillResult& b, const HoleFillOptions& opt) {
+  const bool va = a.faceValid && a.shapeValid, vb = b.faceValid && b.shapeValid;
+  if (va != vb) return va;
+  if (statusRank(a.status) != statusRank(b.status)) return statusRank(a.status) < statusRank(b.status);
+  return reportRatio(a, opt) < reportRatio(b, opt);
+}
+
+// Checks a built face (not yet sewn): validity of the face and of the neighbours whose edges
+// received its pcurves, the continuity report, per-edge levels reached, status and message.
+void judge(HoleFillResult& r, const HoleFillOptions& opt, bool checkNeighbours) {
+  r.faultyEdges.clear();
+  r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
+  // The model is judged on what the fill changed: the new face and the neighbours whose edges
+  // received its pcurves, each of them only if it was valid before (an imported model is often
+  // invalid somewhere, which no fill can be blamed for, nor can it tell from a whole-model check).
+  r.shapeValid = r.faceValid;
+  std::vector<int> checked = r.invalidBefore;  // each neighbour once, and none that was invalid before
+  if (checkNeighbours)
+    for (const auto& he : r.hole.edges) {
+      const int f = he.supportIndex;
+      // 0: a support that is not a face of the model (fillAdjacentHoles' provisional face).
+      if (f < 1 || std::find(checked.begin(), checked.end(), f) != checked.end()) continue;
+      checked.push_back(f);
+      if (!BRepCheck_Analyzer(he.support).IsValid()) {
+        r.shapeValid = false;
+        r.warnings.push_back("Face" + std::to_string(f) + " (a neighbour of the hole) is not valid after the fill (BRepCheck)");
+      }
+    }
+  r.report = continuityReport(r.face, r.hole);
+  // Per edge: the highest level reached. The fill reaches k when every edge reaches k, or as
+  // much as was asked of it where that is less than the request (a crease asked G0).
+  r.edgeReached.assign(r.edgeRequests.size(), -1);
+  for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
+    const EdgeRequest& q = r.edgeRequests[i];
+    for (const auto& e : r.report.edges)
+      if (e.edgeIndex == q.edgeIndex)
+        r.edgeReached[i] = e.g0 > r.g0Tolerance ? -1 : (e.g1 > opt.angularTolerance ? 0 : (e.g2 > opt.curvatureTolerance ? 1 : 2));
+    if (r.edgeReached[i] < static_cast<int>(q.asked)) r.faultyEdges.push_back(q.edgeIndex);
+  }
+  int reached = -1;
+  for (int k = 2; k >= 0 && reached < 0; --k) {
+    bool all = true;
+    for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
+      const int asked = static_cast<int>(r.edgeRequests[i].asked);
+      all = all && r.edgeReached[i] >= (asked < static_cast<int>(opt.continuity) ? std::min(k, asked) : k);
+    }
+    if (all) reached = k;
+  }
+  r.achieved = reached < 0 ? "none" : "G" + std::to_string(reached);
+  if (!r.faceValid || !r.shapeValid) {
+    r.status = FillStatus::Failed;
+    r.failedStage = FillStage::Check;
+    r.message = std::string("the filled ") + (!r.faceValid ? "face" : "model") + " is not a valid B-rep (BRepCheck)";
+  } else if (!r.faultyEdges.empty()) {
+    r.status = FillStatus::ToleranceNotMet;
+    r.failedStage = FillStage::Solve;
+    r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
+                ", G1 " + std::to_string(r.report.g1) + " rad, G2 " + std::to_string(r.report.g2) +
+                "); worst at " + edgeList(r.faultyEdges);
+  } else {
+    r.status = FillStatus::Ok;
+    r.failedStage = FillStage::None;
+    r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
+    int creases = 0, lowered = 0;
+    for (const auto& q : r.edgeRequests)
+      if (q.asked < opt.continuity) ++(q.source == "crease" ? creases : lowered);
+    if (creases) r.message += "; G0 asked on " + std::to_string(creases) + " crease edge(s)";
+    if (lowered) r.message += "; less than " + r.requested + " asked on " + std::to_string(lowered) + " edge(s)";
+  }
 }
 
 }  // namespace
@@ -150,231 +238,223 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     };
     if (!progress(0.05)) return cancelled();
 
-    // One attempt per sampling density; a second, denser one only when the first met the
-    // tolerances at its samples but the dense check found the boundary missed between them.
+    // Attempts, each complete (parameterize, solve, build, sew, check): the method at the base
+    // sampling density, then at kDensify x the density when it met the tolerances at its samples
+    // but the report found the boundary missed between them. Auto (fill by result) starts with its
+    // own pick (it also refuses a planar loop whose projection folds, which MVC alone would map onto
+    // its N-gon and fill as if it were a hole), then the other of NP/MVC, then UVTran while the time
+    // budget allows, each while nothing so far passed the report; the best by the report is kept
+    // (betterFill). Judging candidates at their samples only, as this did before, kept fills that
+    // the report then failed where another method passed (docs/benchmarks.md).
     constexpr int kDensify = 4;
-    int density = 1;
-    while (true) {
+    HF_CHECK(r.hole.scale > 0, "the hole has zero size");
+    const Hole& hole = r.hole;
+    const double scale = hole.scale;
+    r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
+    VariationalFillOptions so = opt.solver;
+    so.continuity = highest;
+    // The solver meets slightly tighter targets at its samples than the report checks between them.
+    so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
+    so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
+    so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
+
+    struct Sampled {
+      std::vector<BoundarySample> samples, unit;  // model units; normalized (centre at 0, scale 1)
+      Eigen::Vector3d centre;
+    };
+    std::map<int, Sampled> sampledAt;  // by density
+    auto sampled = [&](int density) -> const Sampled& {
+      auto it = sampledAt.find(density);
+      if (it != sampledAt.end()) return it->second;
       stage = FillStage::Sample;
-      t = Clock::now();
-      const Hole& hole = r.hole;
-      HF_CHECK(hole.scale > 0, "the hole has zero size");
+      const auto ts = Clock::now();
       BoundarySamplingOptions sampling = opt.sampling;
       sampling.minSamplesPerEdge *= density;
       sampling.maxSamplesPerEdge *= density;
-      const std::vector<BoundarySample> samples = sampleBoundary(hole, sampling);
-      r.samples = static_cast<int>(samples.size());
-      for (const auto& s : samples)
-        if (!s.point.allFinite() || !s.normal.allFinite() || !std::isfinite(s.curvature))
+      Sampled sd;
+      sd.samples = sampleBoundary(hole, sampling);
+      for (const auto& x : sd.samples)
+        if (!x.point.allFinite() || !x.normal.allFinite() || !std::isfinite(x.curvature))
           throw Error("the hole boundary has non-finite coordinates (NaN or infinity) at Edge" +
-                      std::to_string(hole.edges[s.edge].edgeIndex));
-      // Normalize: centre of the boundary box at the origin, its diagonal = 1.
-      Eigen::Vector3d lo = samples[0].point, hi = samples[0].point;
-      for (const auto& s : samples) { lo = lo.cwiseMin(s.point); hi = hi.cwiseMax(s.point); }
-      const Eigen::Vector3d centre = 0.5 * (lo + hi);
-      const double scale = hole.scale;
-      std::vector<BoundarySample> unit = samples;
-      for (auto& s : unit) {
-        s.point = (s.point - centre) / scale;
-        s.curvature *= scale;
-        s.weight /= scale;
+                      std::to_string(hole.edges[x.edge].edgeIndex));
+      Eigen::Vector3d lo = sd.samples[0].point, hi = sd.samples[0].point;
+      for (const auto& x : sd.samples) { lo = lo.cwiseMin(x.point); hi = hi.cwiseMax(x.point); }
+      sd.centre = 0.5 * (lo + hi);
+      sd.unit = sd.samples;
+      for (auto& x : sd.unit) {
+        x.point = (x.point - sd.centre) / scale;
+        x.curvature *= scale;
+        x.weight /= scale;
       }
-      r.timings.sample += since(t);
+      r.timings.sample += since(ts);
+      return sampledAt.emplace(density, std::move(sd)).first->second;
+    };
 
-      stage = FillStage::Parameterize;
-      r.g0Tolerance = opt.tolerance > 0 ? opt.tolerance : tol::kG0Strict * scale;
-      VariationalFillOptions so = opt.solver;
-      so.continuity = highest;
-      // The solver meets slightly tighter targets at its samples than the report checks between them.
-      so.g0Tolerance = std::min(so.g0Tolerance, opt.solverMargin * r.g0Tolerance / scale);
-      so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
-      so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
-      // One candidate: parameterize, then solve. Worker threads get no progress callback (it may
-      // be a Python callable, which only the calling thread may run).
-      auto attempt = [&](ParamMethod m, bool report) {
-        FillAttempt a;
-        a.method = m;
-        const auto ta = Clock::now();
-        try {
-          a.P = parameterize(hole, unit, m, opt.parameterization);
-          a.method = a.P.chosen;
-          a.parameterizeSeconds = since(ta);
-          FillConstraints c;
-          for (size_t k = 0; k < unit.size(); ++k) {
-            c.uv.push_back(a.P.uv[k]);
-            c.point.push_back(unit[k].point);
-            c.normal.push_back(unit[k].normal);
-            c.across.push_back(unit[k].across);
-            c.curvature.push_back(unit[k].curvature);
-            c.weight.push_back(unit[k].weight);
-            c.normalValid.push_back(unit[k].normalValid);
-            c.edge.push_back(unit[k].edge);
-            c.order.push_back(static_cast<int>(r.edgeRequests[unit[k].edge].asked));
-          }
-          c.referenceUV = a.P.interiorUV;
-          c.referenceXYZ = a.P.interiorXYZ;
-          VariationalFillOptions sa = so;
-          if (report) sa.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
-          a.vf = solveVariationalFill(c, a.P.u0, a.P.u1, a.P.v0, a.P.v1, a.P.knotsU, a.P.knotsV, sa);
-          a.level = a.vf.levelMet;
-          a.ratio = a.vf.worstRatio;
-          a.energy = trimmedBendingEnergy(a.vf.surface, a.P.uv);
-          a.ok = true;
-        } catch (const Error& e) {
-          a.error = e.what();
-        } catch (const Standard_Failure& e) {
-          a.error = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+    // Parameterize and solve at one density's samples. Worker threads get no progress callback
+    // (it may be a Python callable, which only the calling thread may run).
+    auto solveWith = [&](ParamMethod m, const Sampled& sd, bool report) {
+      FillAttempt a;
+      a.method = m;
+      const auto ta = Clock::now();
+      try {
+        a.P = parameterize(hole, sd.unit, m, opt.parameterization);
+        a.method = a.P.chosen;
+        a.parameterizeSeconds = since(ta);
+        FillConstraints c;
+        for (const auto& x : sd.unit) {
+          c.uv.push_back(a.P.uv[c.uv.size()]);
+          c.point.push_back(x.point);
+          c.normal.push_back(x.normal);
+          c.across.push_back(x.across);
+          c.curvature.push_back(x.curvature);
+          c.weight.push_back(x.weight);
+          c.normalValid.push_back(x.normalValid);
+          c.edge.push_back(x.edge);
+          c.order.push_back(static_cast<int>(r.edgeRequests[x.edge].asked));
         }
-        a.seconds = since(ta);
-        return a;
-      };
-      std::vector<FillAttempt> tried;
-      if (opt.method == ParamMethod::Auto && opt.fillByResult && density == 1) {
-        // Fill by result: Auto's own pick first (it also refuses a planar loop whose projection folds,
-        // which MVC alone would map onto its N-gon and fill as if it were a hole); the other of
-        // NP/MVC when the pick misses the tolerances at its samples, and UVTran when both miss and
-        // the time budget allows. Ranking all of them by bending energy even when the pick meets
-        // its tolerances was measured on the corpus to lose more holes than it wins: a candidate's
-        // tier at its samples is not yet its tier after the dense check (docs/benchmarks.md).
-        const ParamMethod pick = parameterize(hole, unit, ParamMethod::Auto, opt.parameterization).chosen;
-        tried.push_back(attempt(pick, true));
-        auto met = [&] { return std::any_of(tried.begin(), tried.end(), [](const FillAttempt& a) { return a.ok && a.vf.toleranceMet; }); };
-        if (!met() && !tried[0].vf.cancelled)
-          tried.push_back(attempt(pick == ParamMethod::NearestPlane ? ParamMethod::MeanValue : ParamMethod::NearestPlane, false));
-        if (!met() && !tried[0].vf.cancelled && opt.autoUvtran && (opt.autoTimeBudget <= 0 || since(t0) < opt.autoTimeBudget)) {
-          FillAttempt u = attempt(ParamMethod::Uvtran, false);
-          if (u.ok && u.method == ParamMethod::Uvtran) tried.push_back(std::move(u));  // not MVC again
-        }
-        if (!progress(0.85)) return cancelled();
-      } else {
-        tried.push_back(attempt(density == 1 ? opt.method : r.chosenMethod, true));
+        c.referenceUV = a.P.interiorUV;
+        c.referenceXYZ = a.P.interiorXYZ;
+        VariationalFillOptions sa = so;
+        if (report) sa.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
+        a.vf = solveVariationalFill(c, a.P.u0, a.P.u1, a.P.v0, a.P.v1, a.P.knotsU, a.P.knotsV, sa);
+        a.level = a.vf.levelMet;
+        a.ratio = a.vf.worstRatio;
+        a.energy = trimmedBendingEnergy(a.vf.surface, a.P.uv);
+        a.ok = true;
+      } catch (const Error& e) {
+        a.error = e.what();
+      } catch (const Standard_Failure& e) {
+        a.error = std::string("OpenCASCADE failed: ") + e.GetMessageString();
       }
-      auto better = [](const FillAttempt& a, const FillAttempt& b) {
-        if (a.ok != b.ok) return a.ok;
-        if (a.level != b.level) return a.level > b.level;
-        if (a.vf.toleranceMet && b.vf.toleranceMet) return a.energy < b.energy;
-        return a.ratio < b.ratio;
-      };
-      size_t best = 0;
-      for (size_t i = 1; i < tried.size(); ++i)
-        if (better(tried[i], tried[best])) best = i;
-      for (const auto& a : tried) {
-        r.timings.parameterize += a.parameterizeSeconds;
-        r.timings.solve += a.seconds - a.parameterizeSeconds;
-      }
-      if (density == 1) r.candidates = tried;
-      FillAttempt& win = tried[best];
-      if (!win.ok) {
-        stage = win.P.uv.empty() ? FillStage::Parameterize : FillStage::Solve;
-        throw Error(win.error);
-      }
-      if (tried.size() > 1 && density == 1) {
-        std::string why = "auto: " + toString(win.method) + " won (";
-        for (const auto& a : tried)
-          if (&a != &win)
-            why += toString(a.method) + (a.ok ? (a.level < win.level ? " reached less" : a.level > win.level ? " reached more" :
-                   " energy " + std::to_string(a.energy) + " vs " + std::to_string(win.energy)) : " failed: " + a.error.substr(0, 80)) + "; ";
-        r.warnings.push_back(why.substr(0, why.size() - 2) + ")");
-      }
-      r.chosenMethod = win.method;
-      const Parameterization& P = win.P;
-      const VariationalFillResult& vf = win.vf;
-      if (density == 1)
-        for (const auto& w : P.warnings) r.warnings.push_back(w);
-      if (P.chosen != opt.method) r.methodName = toString(opt.method) + ":" + toString(P.chosen);
+      a.seconds = since(ta);
+      r.timings.parameterize += a.parameterizeSeconds;
+      r.timings.solve += a.seconds - a.parameterizeSeconds;
+      return a;
+    };
+
+    // Build and check one solved attempt: a complete result (r's hole, requests and warnings so
+    // far, plus this attempt's face, report and status). The face leaves the edges again
+    // (detachFace), so the next candidate is built and judged on the edges as the model had them;
+    // the one kept is put back on and sewn.
+    auto judged = [&](const FillAttempt& a, const Sampled& sd, FaceBuildResult& built) {
+      HoleFillResult ri = r;
+      ri.chosenMethod = a.method;
+      const Parameterization& P = a.P;
+      const VariationalFillResult& vf = a.vf;
+      for (const auto& w : P.warnings) ri.warnings.push_back(w);
+      for (const auto& w : vf.warnings) ri.warnings.push_back(w);
+      if (P.chosen != opt.method) ri.methodName = toString(opt.method) + ":" + toString(P.chosen);
       if (P.chosen == ParamMethod::Uvtran) {
-        r.projectionSurface = P.projectionSurface;
-        for (int i = 0; i < r.projectionSurface.poles.rows(); ++i)
-          r.projectionSurface.poles.row(i) = (centre + scale * P.projectionSurface.poles.row(i).transpose()).transpose();
+        ri.projectionSurface = P.projectionSurface;
+        for (int i = 0; i < ri.projectionSurface.poles.rows(); ++i)
+          ri.projectionSurface.poles.row(i) = (sd.centre + scale * P.projectionSurface.poles.row(i).transpose()).transpose();
       }
-      if (!progress(0.1)) return cancelled();
-      stage = FillStage::Solve;
-      for (const auto& w : vf.warnings) r.warnings.push_back(w);
-      if (vf.cancelled) return cancelled();
       BSplineSurface surf = vf.surface;
-      for (int i = 0; i < surf.poles.rows(); ++i) surf.poles.row(i) = (centre + scale * surf.poles.row(i).transpose()).transpose();
-      r.polesU = surf.numU();
-      r.polesV = surf.numV();
-      r.refinements = vf.refinements;
+      for (int i = 0; i < surf.poles.rows(); ++i) surf.poles.row(i) = (sd.centre + scale * surf.poles.row(i).transpose()).transpose();
+      ri.polesU = surf.numU();
+      ri.polesV = surf.numV();
+      ri.refinements = vf.refinements;
+      ri.samples = static_cast<int>(sd.samples.size());
+      FillStage at = FillStage::Build;
+      try {
+        auto tb = Clock::now();
+        built = buildTrimmedFace(hole, toOcct(surf), sd.samples, P.uv);
+        ri.face = built.face;
+        r.timings.build += since(tb);
+        at = FillStage::Check;
+        tb = Clock::now();
+        judge(ri, opt, opt.sew);
+        detachFace(hole, built);
+        r.timings.check += since(tb);
+      } catch (const Error& e) {
+        if (!built.face.IsNull()) detachFace(hole, built);
+        built = FaceBuildResult();
+        ri.status = FillStatus::Failed;
+        ri.failedStage = at;
+        ri.message = e.what();
+      } catch (const Standard_Failure& e) {
+        if (!built.face.IsNull()) detachFace(hole, built);
+        built = FaceBuildResult();
+        ri.status = FillStatus::Failed;
+        ri.failedStage = at;
+        ri.message = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+      }
+      return ri;
+    };
 
+    std::vector<ParamMethod> methods{opt.method};
+    if (opt.method == ParamMethod::Auto && opt.fillByResult) {
+      const Sampled& sd = sampled(1);
+      stage = FillStage::Parameterize;
+      const ParamMethod pick = parameterize(hole, sd.unit, ParamMethod::Auto, opt.parameterization).chosen;
+      methods = {pick, pick == ParamMethod::NearestPlane ? ParamMethod::MeanValue : ParamMethod::NearestPlane};
+      if (opt.autoUvtran) methods.push_back(ParamMethod::Uvtran);
+    }
+    std::vector<HoleFillResult> results;  // every attempt that built a face or failed trying
+    std::vector<FaceBuildResult> builds;  // the same attempts' faces, detached from the edges
+    std::vector<std::string> tries;       // one line per attempt, for the report
+    std::optional<size_t> best;
+    size_t keptCandidate = 0;
+    std::string firstError;
+    bool cancel = false;
+    for (size_t mi = 0; mi < methods.size() && !cancel; ++mi) {
+      const ParamMethod m = methods[mi];
+      if (m == ParamMethod::Uvtran && mi > 0 && opt.autoTimeBudget > 0 && since(t0) >= opt.autoTimeBudget) break;
+      for (int density : {1, kDensify}) {
+        const Sampled& sd = sampled(density);
+        stage = FillStage::Parameterize;
+        FillAttempt a = solveWith(m, sd, mi == 0 && density == 1);
+        if (mi > 0 && m == ParamMethod::Uvtran && a.ok && a.method != ParamMethod::Uvtran) break;  // not MVC again
+        a.density = density;
+        if (a.ok && a.vf.cancelled) { cancel = true; break; }
+        if (!a.ok) {
+          if (firstError.empty()) firstError = a.error, stage = a.P.uv.empty() ? FillStage::Parameterize : FillStage::Solve;
+          tries.push_back(toString(m) + " failed: " + a.error.substr(0, 80));
+          r.candidates.push_back(std::move(a));
+          break;
+        }
+        builds.emplace_back();
+        results.push_back(judged(a, sd, builds.back()));
+        const HoleFillResult& ri = results.back();
+        a.built = !builds.back().face.IsNull();
+        a.status = ri.status;
+        a.reportRatio = reportRatio(ri, opt);
+        const bool toleranceMetAtSamples = a.vf.toleranceMet;
+        r.candidates.push_back(std::move(a));
+        tries.push_back(toString(a.method) + (density > 1 ? " (" + std::to_string(kDensify) + "x samples)" : "") + ": " +
+                        toString(ri.status) + ", worst " + std::to_string(reportRatio(ri, opt)) + " x tolerance");
+        if (!best || betterFill(ri, results[*best], opt)) best = results.size() - 1, keptCandidate = r.candidates.size() - 1;
+        // Denser samples only for a fill that met its tolerances at its samples but not between them.
+        if (ri.status != FillStatus::ToleranceNotMet || !toleranceMetAtSamples) break;
+      }
+      if (best && results[*best].status == FillStatus::Ok) break;
+      if (!progress(0.85)) cancel = true;
+    }
+    if (cancel) return cancelled();
+    if (!best) throw Error(firstError);
+    // The one kept goes back onto the edges and is sewn into the model.
+    if (!builds[*best].face.IsNull()) {
       stage = FillStage::Build;
-      t = Clock::now();
-      const FaceBuildResult fb = buildTrimmedFace(hole, toOcct(surf), samples, P.uv);
-      r.face = fb.face;
+      const auto tb = Clock::now();
+      attachFace(hole, builds[*best]);
       if (opt.sew) {
-        const SewResult sr = sewFace(work, r.face, opt.computeVolume);
-        r.shape = sr.shape;
-        r.closedSolid = sr.closedSolid;
-        r.volume = sr.volume;
+        const SewResult sr = sewFace(work, builds[*best].face, opt.computeVolume);
+        results[*best].shape = sr.shape;
+        results[*best].closedSolid = sr.closedSolid;
+        results[*best].volume = sr.volume;
       }
-      r.timings.build += since(t);
-
-      stage = FillStage::Check;
-      t = Clock::now();
-      r.faultyEdges.clear();
-      r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
-      // The model is judged on what the fill changed: the new face and the neighbours whose edges
-      // received its pcurves, each of them only if it was valid before (an imported model is often
-      // invalid somewhere, which no fill can be blamed for, nor can it tell from a whole-model check).
-      r.shapeValid = r.faceValid;
-      std::vector<int> checked = r.invalidBefore;  // each neighbour once, and none that was invalid before
-      if (opt.sew)
-        for (size_t i = 0; i < r.hole.edges.size(); ++i) {
-          const int f = r.hole.edges[i].supportIndex;
-          // 0: a support that is not a face of the model (fillAdjacentHoles' provisional face).
-          if (f < 1 || std::find(checked.begin(), checked.end(), f) != checked.end()) continue;
-          checked.push_back(f);
-          if (!BRepCheck_Analyzer(hole.edges[i].support).IsValid()) {
-            r.shapeValid = false;
-            r.warnings.push_back("Face" + std::to_string(f) + " (a neighbour of the hole) is not valid after the fill (BRepCheck)");
-          }
-        }
-      r.report = continuityReport(r.face, hole);
-      // Per edge: the highest level reached. The fill reaches k when every edge reaches k, or as
-      // much as was asked of it where that is less than the request (a crease asked G0).
-      r.edgeReached.assign(r.edgeRequests.size(), -1);
-      for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
-        const EdgeRequest& q = r.edgeRequests[i];
-        for (const auto& e : r.report.edges)
-          if (e.edgeIndex == q.edgeIndex)
-            r.edgeReached[i] = e.g0 > r.g0Tolerance ? -1 : (e.g1 > opt.angularTolerance ? 0 : (e.g2 > opt.curvatureTolerance ? 1 : 2));
-        if (r.edgeReached[i] < static_cast<int>(q.asked)) r.faultyEdges.push_back(q.edgeIndex);
-      }
-      int reached = -1;
-      for (int k = 2; k >= 0 && reached < 0; --k) {
-        bool all = true;
-        for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
-          const int asked = static_cast<int>(r.edgeRequests[i].asked);
-          all = all && r.edgeReached[i] >= (asked < static_cast<int>(opt.continuity) ? std::min(k, asked) : k);
-        }
-        if (all) reached = k;
-      }
-      r.achieved = reached < 0 ? "none" : "G" + std::to_string(reached);
-      r.timings.check += since(t);
-      if (!r.faceValid || !r.shapeValid) {
-        r.status = FillStatus::Failed;
-        r.failedStage = FillStage::Check;
-        r.message = std::string("the filled ") + (!r.faceValid ? "face" : "model") + " is not a valid B-rep (BRepCheck)";
-      } else if (!r.faultyEdges.empty()) {
-        r.status = FillStatus::ToleranceNotMet;
-        r.failedStage = FillStage::Solve;
-        r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
-                    ", G1 " + std::to_string(r.report.g1) + " rad, G2 " + std::to_string(r.report.g2) +
-                    "); worst at " + edgeList(r.faultyEdges);
-      } else {
-        r.status = FillStatus::Ok;
-        r.message = "reached " + r.achieved + " (requested " + r.requested + ")";
-        int creases = 0, lowered = 0;
-        for (const auto& q : r.edgeRequests)
-          if (q.asked < opt.continuity) ++(q.source == "crease" ? creases : lowered);
-        if (creases) r.message += "; G0 asked on " + std::to_string(creases) + " crease edge(s)";
-        if (lowered) r.message += "; less than " + r.requested + " asked on " + std::to_string(lowered) + " edge(s)";
-      }
-      // Met at the samples but not between them: the boundary needs denser samples, once.
-      if (r.status != FillStatus::ToleranceNotMet || !vf.toleranceMet || density > 1) break;
-      r.warnings.push_back("tolerances met at the samples but not between them: resampled " +
-                           std::to_string(kDensify) + "x denser");
-      density = kDensify;
+      r.timings.build += since(tb);
+    }
+    r.candidates[keptCandidate].kept = true;
+    std::vector<FillAttempt> candidates = std::move(r.candidates);
+    FillTimings timings = r.timings;
+    r = std::move(results[*best]);
+    r.candidates = std::move(candidates);
+    r.timings = timings;
+    if (tries.size() > 1) {
+      std::string line = toString(opt.method) + " tried ";
+      for (const auto& x : tries) line += x + "; ";
+      r.warnings.push_back(line + "kept " + toString(r.chosenMethod));
     }
   } catch (const Error& e) {
     if (stage == FillStage::Detect) throw;  // the hole could not be named: the caller's mistake
@@ -442,10 +522,12 @@ std::string toJson(const HoleFillResult& r) {
   j.field("faulty_edges", r.faultyEdges);
   j.key("candidates").beginArray();
   for (const auto& a : r.candidates) {
-    j.beginObject().field("method", toString(a.method)).field("ok", a.ok);
+    j.beginObject().field("method", toString(a.method)).field("ok", a.ok).field("density", a.density);
     if (a.ok) {
       j.field("level_at_samples", a.level).field("tolerance_met_at_samples", a.vf.toleranceMet);
       j.field("g0", a.vf.g0).field("g1", a.vf.g1).field("g2", a.vf.g2).field("bending_energy", a.energy);
+      j.field("built", a.built).field("status", toString(a.status)).field("report_worst_ratio", a.reportRatio);
+      j.field("kept", a.kept);
     } else {
       j.field("error", a.error);
     }

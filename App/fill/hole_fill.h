@@ -38,8 +38,9 @@ struct HoleFillOptions {
   ParameterizationOptions parameterization;
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
   double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
-  bool fillByResult = true;         // Auto solves its pick (parameterizer.h), then the other of NP/MVC when
-                                    // the pick misses the tolerances at its samples, and keeps the better;
+  bool fillByResult = true;         // Auto fills with its pick (parameterizer.h), then with the other of
+                                    // NP/MVC when the pick's face misses the tolerances (judged by the
+                                    // continuity report, between the samples too), and keeps the better;
                                     // false: Auto's pick alone
   bool autoUvtran = true;           // ... and UVTran too when both missed
   double autoTimeBudget = 2.0;      // seconds: UVTran is not started after this (0: no limit)
@@ -50,6 +51,7 @@ struct HoleFillOptions {
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel
 };
 
+
 enum class FillStatus { Ok, ToleranceNotMet, Failed, Cancelled };
 enum class FillStage { None, Detect, Sample, Parameterize, Solve, Build, Check };
 std::string toString(FillStatus s);
@@ -59,7 +61,7 @@ struct FillTimings {
   double detect = 0, sample = 0, parameterize = 0, solve = 0, build = 0, check = 0, total = 0;  // seconds
 };
 
-// One parameterize + solve of a hole (Auto tries several; the best is built and checked).
+// One parameterize + solve of a hole (Auto tries several; each is built and checked, the best kept).
 struct FillAttempt {
   ParamMethod method = ParamMethod::Auto;  // the method used
   bool ok = false;
@@ -70,6 +72,12 @@ struct FillAttempt {
   double ratio = 0;          // worst error / its tolerance at the samples
   double energy = 0;         // trimmedBendingEnergy of the solved surface (normalized units)
   double seconds = 0, parameterizeSeconds = 0;
+  int density = 1;           // boundary samples, as a multiple of the options' sampling
+  // The face built from it, judged as the result is (the continuity report between the samples):
+  bool built = false;
+  FillStatus status = FillStatus::Failed;
+  double reportRatio = 0;    // worst report error / its tolerance, over what each edge was asked
+  bool kept = false;         // the one returned
 };
 
 struct HoleFillResult {
@@ -97,7 +105,7 @@ struct HoleFillResult {
   FillTimings timings;
   std::string methodName;           // "uvtran:mvc" when a request fell back, "auto:np" for the one Auto kept
   ParamMethod chosenMethod = ParamMethod::Auto;
-  std::vector<FillAttempt> candidates;  // what Auto tried (one entry for a named method)
+  std::vector<FillAttempt> candidates;  // every attempt, in order (one for a named method that met the tolerances)
   BSplineSurface projectionSurface; // UVTran's predicted projection surface (model units), when it was used
 };
 
