@@ -110,14 +110,35 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
     }
   } else {
     const int N = static_cast<int>(corners.size());
-    R = L / (2.0 * N * std::sin(M_PI / N));  // N-gon with the loop's perimeter
-    std::vector<Eigen::Vector2d> V(N);
-    for (int c = 0; c < N; ++c) V[c] = R * Eigen::Vector2d(std::cos(2 * M_PI * c / N), std::sin(2 * M_PI * c / N));
+    // Arc lengths along each side, from corner c to corner c + 1.
+    std::vector<std::vector<double>> arc(N);
     for (int c = 0; c < N; ++c) {
       const int a = corners[c], b = corners[(c + 1) % N];
       const int len = (b - a + n) % n == 0 ? n : (b - a + n) % n;
-      std::vector<double> acc(len + 1, 0.0);
-      for (int k = 1; k <= len; ++k) acc[k] = acc[k - 1] + (s[(a + k) % n].point - s[(a + k - 1) % n].point).norm();
+      arc[c].assign(len + 1, 0.0);
+      for (int k = 1; k <= len; ++k) arc[c][k] = arc[c][k - 1] + (s[(a + k) % n].point - s[(a + k - 1) % n].point).norm();
+    }
+    std::vector<Eigen::Vector2d> V(N);
+    if (N == 4) {
+      // A four-sided loop goes onto the axis-aligned rectangle whose width and height are the
+      // mean lengths of its opposite sides: its sides are iso-lines of the tensor-product fill
+      // (refining a side's spans refines along that side only, no domain corner lies outside the
+      // hole), and a long thin strip keeps its proportions, so the knots are spent along it, not
+      // across (a square made a 15:1 strip of the hammer model run out of poles).
+      const double w = 0.5 * (arc[0].back() + arc[2].back()), h = 0.5 * (arc[1].back() + arc[3].back());
+      V = {Eigen::Vector2d(-w / 2, -h / 2), Eigen::Vector2d(w / 2, -h / 2), Eigen::Vector2d(w / 2, h / 2),
+           Eigen::Vector2d(-w / 2, h / 2)};
+      R = 0.5 * std::max(w, h);
+    } else {
+      // The regular N-gon with the loop's perimeter, its first side along u.
+      R = L / (2.0 * N * std::sin(M_PI / N));
+      const double start = -M_PI / 2 - M_PI / N;
+      for (int c = 0; c < N; ++c) V[c] = R * Eigen::Vector2d(std::cos(start + 2 * M_PI * c / N), std::sin(start + 2 * M_PI * c / N));
+    }
+    for (int c = 0; c < N; ++c) {
+      const int a = corners[c];
+      const std::vector<double>& acc = arc[c];
+      const int len = static_cast<int>(acc.size()) - 1;
       for (int k = 0; k < len; ++k) {
         const double f = acc[len] > 0 ? acc[k] / acc[len] : double(k) / len;
         P.uv[(a + k) % n] = (1 - f) * V[c] + f * V[(c + 1) % N];
@@ -128,7 +149,9 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
   // Interior reference points by mean value interpolation of the boundary.
   std::vector<int> at;
   const Polygon2 poly = pcurvePolygon(P.uv, at);
-  for (const auto& x : gridInside(poly, Eigen::Vector2d(-R, -R), Eigen::Vector2d(R, R), opt.interiorReferenceGrid)) {
+  Eigen::AlignedBox2d box;
+  for (const auto& q : P.uv) box.extend(q);
+  for (const auto& x : gridInside(poly, box.min(), box.max(), opt.interiorReferenceGrid)) {
     const Eigen::VectorXd w = meanValueCoordinates(poly, x);
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int k = 0; k < w.size(); ++k) p += w(k) * s[at[k]].point;

@@ -2,9 +2,10 @@
 // surface's domain: the samples of the trimming pcurve (uvtran.md Sec. 2-3).
 // All sit behind parameterize().
 //  - NearestPlane (NP, Liu 2012): least-squares plane of the loop, orthogonal projection.
-//  - MeanValue (MVC, Floater 2003): the N corners go to a regular N-gon, samples along each
-//    side by chord length; mean value coordinates of interior points of the N-gon
-//    interpolate the boundary and give interior reference points (uv, xyz).
+//  - MeanValue (MVC, Floater 2003): the N corners go to a regular N-gon whose first side lies
+//    along u (a 4-sided loop fills the axis-aligned square), samples along each side by chord
+//    length; mean value coordinates of interior points of the N-gon interpolate the boundary
+//    and give interior reference points (uv, xyz).
 //  - Auto: NP when every support normal is within acos(autoPlaneCos) of the least-squares
 //    plane's normal (the fill is a height field over the plane) and the projection does not
 //    fold, else MVC; a planar loop that folds is self-intersecting and stays an error.

@@ -64,22 +64,50 @@ TEST(Parameterizer, NearestPlaneIsAnIsometryOnPlanarLoops) {
   EXPECT_LE(p.u0, p.uv[0].x());
 }
 
-TEST(Parameterizer, MeanValueMapsCornersToARegularPolygon) {
+TEST(Parameterizer, MeanValueMapsAFourSidedLoopOntoTheRectangleOfItsSides) {
   Hole hole;
   const auto s = tiltedRectangle(hole);
   const Parameterization p = parameterize(hole, s, ParamMethod::MeanValue);
   ASSERT_EQ(p.cornerSamples.size(), 4u);
-  const double side = (p.uv[p.cornerSamples[0]] - p.uv[p.cornerSamples[1]]).norm();
+  // Axis-aligned (the sides are iso-lines of the fill), 3 x 1 as the loop's opposite sides are.
   for (int c = 0; c < 4; ++c) {
-    EXPECT_NEAR((p.uv[p.cornerSamples[c]] - p.uv[p.cornerSamples[(c + 1) % 4]]).norm(), side, 1e-12);
-    EXPECT_NEAR((p.uv[p.cornerSamples[c]] - p.uv[p.cornerSamples[(c + 2) % 4]]).norm(), side * std::sqrt(2.0), 1e-12);
+    const Eigen::Vector2d d = p.uv[p.cornerSamples[(c + 1) % 4]] - p.uv[p.cornerSamples[c]];
+    EXPECT_NEAR(std::min(std::abs(d.x()), std::abs(d.y())), 0.0, 1e-12);
+    EXPECT_NEAR(d.norm(), c % 2 == 0 ? 3.0 : 1.0, 1e-12);
   }
   // Chord length along a side: the midpoint sample of the first side is the side's midpoint.
   EXPECT_LT((p.uv[5] - 0.5 * (p.uv[0] + p.uv[10])).norm(), 1e-12);
-  // Interior reference points interpolate the planar boundary: they lie in its plane.
-  ASSERT_FALSE(p.interiorXYZ.empty());
+  // Interior reference points interpolate the planar boundary: they lie in its plane, and they
+  // cover the whole rectangle, not a band of it.
+  ASSERT_GE(p.interiorXYZ.size(), 50u);
   const Eigen::Vector3d n = (s[10].point - s[0].point).cross(s[30].point - s[0].point).normalized();
   for (const auto& x : p.interiorXYZ) EXPECT_NEAR((x - s[0].point).dot(n), 0.0, 1e-9);
+}
+
+TEST(Parameterizer, MeanValueMapsOtherLoopsOntoARegularPolygonWithItsFirstSideAlongU) {
+  // A planar pentagon with unequal sides: corners go to the regular pentagon of its perimeter.
+  Hole hole;
+  const Eigen::Vector2d c2[5] = {{0, 0}, {4, 0}, {5, 2}, {2, 4}, {-1, 2}};
+  std::vector<BoundarySample> s;
+  hole.edges.resize(5);
+  for (int e = 0; e < 5; ++e) {
+    hole.edges[e].cornerAtStart = true;
+    for (int i = 0; i <= 10; ++i) {
+      BoundarySample x;
+      const Eigen::Vector2d q = c2[e] + (c2[(e + 1) % 5] - c2[e]) * (i / 10.0);
+      x.point = Eigen::Vector3d(q.x(), q.y(), 0.0);
+      x.weight = 0.1;
+      x.edge = e;
+      s.push_back(x);
+    }
+  }
+  hole.corners = 5;
+  const Parameterization p = parameterize(hole, s, ParamMethod::MeanValue);
+  ASSERT_EQ(p.cornerSamples.size(), 5u);
+  const double side = (p.uv[p.cornerSamples[0]] - p.uv[p.cornerSamples[1]]).norm();
+  for (int c = 0; c < 5; ++c)
+    EXPECT_NEAR((p.uv[p.cornerSamples[c]] - p.uv[p.cornerSamples[(c + 1) % 5]]).norm(), side, 1e-12);
+  EXPECT_NEAR(p.uv[p.cornerSamples[0]].y(), p.uv[p.cornerSamples[1]].y(), 1e-12);  // first side along u
 }
 
 TEST(Parameterizer, DegenerateLoopIsAClearError) {
