@@ -243,6 +243,7 @@ int cmdFill(const Args& a) {
   o.checkModel = a.has("--check-model");
   TopoDS_Shape shape = readShape(a.input);
   if (a.has("--divide")) return fillAdjacent(a, shape, o);
+  o.copyModel = false;  // the model was read for this fill alone
   std::vector<HoleFillResult> results;
   if (a.has("--all-holes") || a.get("--hole") == "all") {
     const size_t n = detectHoles(shape).holes.size();

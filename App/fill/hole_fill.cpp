@@ -161,7 +161,7 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
   // The new pcurves and tolerances go onto edges the user's shape does not own: a deep copy of
   // the model when the face is sewn into it, else copies of the hole's edges alone (one copy,
   // so consecutive edges keep sharing their vertices), which costs nothing on large models.
-  const TopoDS_Shape work = opt.sew ? BRepBuilderAPI_Copy(model, Standard_True, Standard_False).Shape() : model;
+  const TopoDS_Shape work = opt.sew && opt.copyModel ? BRepBuilderAPI_Copy(model, Standard_True, Standard_False).Shape() : model;
   const HoleDetectionResult det = detectHoles(work, opt.detection);
   Hole hole = holeContainingEdges(det, holeEdges);
   if (!opt.sew) {
@@ -238,9 +238,10 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     };
     if (!progress(0.05)) return cancelled();
 
-    // Attempts, each complete (parameterize, solve, build, sew, check): the method at the base
-    // sampling density, then at kDensify x the density when it met the tolerances at its samples
-    // but the report found the boundary missed between them. Auto (fill by result) starts with its
+    // Attempts, each complete (parameterize, solve, build, check): the method at the base
+    // sampling density, then at kDensify x (and kDensify² x) the density when it met the
+    // tolerances at its samples but the report found the boundary missed between them, or its
+    // knot refinement ran out of samples to split spans by. Auto (fill by result) starts with its
     // own pick (it also refuses a planar loop whose projection folds, which MVC alone would map onto
     // its N-gon and fill as if it were a hole), then the other of NP/MVC, then UVTran while the time
     // budget allows, each while nothing so far passed the report; the best by the report is kept
@@ -400,7 +401,8 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     for (size_t mi = 0; mi < methods.size() && !cancel; ++mi) {
       const ParamMethod m = methods[mi];
       if (m == ParamMethod::Uvtran && mi > 0 && opt.autoTimeBudget > 0 && since(t0) >= opt.autoTimeBudget) break;
-      for (int density : {1, kDensify}) {
+      double lastRatio = 0;
+      for (int density : {1, kDensify, kDensify * kDensify}) {
         const Sampled& sd = sampled(density);
         stage = FillStage::Parameterize;
         FillAttempt a = solveWith(m, sd, mi == 0 && density == 1);
@@ -419,13 +421,17 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         a.built = !builds.back().face.IsNull();
         a.status = ri.status;
         a.reportRatio = reportRatio(ri, opt);
-        const bool toleranceMetAtSamples = a.vf.toleranceMet;
+        // Denser samples pay for a fill that met its tolerances at its samples but not between
+        // them, or whose refinement ran out of samples to split spans by; a third density only
+        // when the second did better than the first.
+        const bool denser = ri.status == FillStatus::ToleranceNotMet && (a.vf.toleranceMet || a.vf.samplesTooSparse) &&
+                            (density == 1 || a.reportRatio < 0.5 * lastRatio);
+        lastRatio = a.reportRatio;
+        tries.push_back(toString(a.method) + (density > 1 ? " (" + std::to_string(density) + "x samples)" : "") + ": " +
+                        toString(ri.status) + ", worst " + std::to_string(a.reportRatio) + " x tolerance");
         r.candidates.push_back(std::move(a));
-        tries.push_back(toString(a.method) + (density > 1 ? " (" + std::to_string(kDensify) + "x samples)" : "") + ": " +
-                        toString(ri.status) + ", worst " + std::to_string(reportRatio(ri, opt)) + " x tolerance");
         if (!best || betterFill(ri, results[*best], opt)) best = results.size() - 1, keptCandidate = r.candidates.size() - 1;
-        // Denser samples only for a fill that met its tolerances at its samples but not between them.
-        if (ri.status != FillStatus::ToleranceNotMet || !toleranceMetAtSamples) break;
+        if (!denser) break;
       }
       if (best && results[*best].status == FillStatus::Ok) break;
       if (!progress(0.85)) cancel = true;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -243,6 +244,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
   const int order = o.continuity == Continuity::G2 ? 2 : 1;
   const int totalRounds = o.maxRefinements + 1;
 
+  double previousRatio = std::numeric_limits<double>::infinity();
   for (int level = 0; level <= o.maxRefinements; ++level) {
     System sys;
     sys.nu = static_cast<int>(U.size()) - P - 1;
@@ -351,13 +353,32 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     res.refinements = level;
     if (o.progress && !o.progress(double(level + 1) / totalRounds)) { res.cancelled = true; break; }
     if (bestErr.violating.empty() || level == o.maxRefinements) break;
-    // Refine: split every u-span and v-span that holds a violating sample.
+    // Refine: split every u-span and v-span that holds a violating sample and enough samples.
+    std::map<int, int> inU, inV;  // samples per span
+    for (size_t k = 0; k < c.size(); ++k) {
+      ++inU[findSpan(U, P, c.uv[k].x())];
+      ++inV[findSpan(V, P, c.uv[k].y())];
+    }
     std::set<double> newU, newV;
+    bool blocked = false;
     for (int k : bestErr.violating) {
       const int su = findSpan(U, P, c.uv[k].x()), sv = findSpan(V, P, c.uv[k].y());
-      newU.insert(0.5 * (U[su] + U[su + 1]));
-      newV.insert(0.5 * (V[sv] + V[sv + 1]));
+      if (inU[su] >= o.minSamplesPerSplit) newU.insert(0.5 * (U[su] + U[su + 1]));
+      else blocked = true;
+      if (inV[sv] >= o.minSamplesPerSplit) newV.insert(0.5 * (V[sv] + V[sv + 1]));
+      else blocked = true;
     }
+    // A blocked span needs denser samples, not knots: say so, and stop once the splits that
+    // remain possible no longer help (they refine the other direction only).
+    const double ratioNow = worstRatio(bestErr, o);
+    if (blocked) res.samplesTooSparse = true;
+    if ((newU.empty() && newV.empty()) || (blocked && ratioNow > 0.9 * previousRatio)) {
+      res.warnings.push_back("knot refinement stopped at " + std::to_string(sys.nu) + "x" + std::to_string(sys.nv) +
+                             " poles: spans holding violating samples hold fewer than " +
+                             std::to_string(o.minSamplesPerSplit) + " boundary samples");
+      break;
+    }
+    previousRatio = ratioNow;
     const int nuNew = sys.nu + static_cast<int>(newU.size()), nvNew = sys.nv + static_cast<int>(newV.size());
     if (nuNew * nvNew > o.maxControlPoints) {
       res.warnings.push_back("knot refinement stopped at " + std::to_string(sys.nu) + "x" + std::to_string(sys.nv) +

@@ -9,9 +9,10 @@
 // factorization (sparse LDLT of the normal equations; targets are shifted by the
 // residual each round), so tolerances far below what a pure penalty reaches are met
 // without ill-conditioned weights. Where samples still violate the tolerances, knots
-// are inserted at the middle of the u- and v-spans holding them and the problem is
-// solved again, until the tolerances hold, maxControlPoints is reached or maxRefinements
-// rounds are done. G2 re-linearizes curvatureIterations times. Everything is solved in
+// are inserted at the middle of the u- and v-spans holding them (only spans that hold
+// enough samples to pin both halves) and the problem is solved again, until the
+// tolerances hold, maxControlPoints is reached, maxRefinements rounds are done, or no
+// span can be split (samplesTooSparse: the caller resamples the boundary denser). G2 re-linearizes curvatureIterations times. Everything is solved in
 // the caller's (normalized) coordinates; tolerances are in those units.
 // HOLEFILL_DEBUG=1 in the environment prints per-level diagnostics (poles, errors, timings) to stderr.
 //
@@ -68,6 +69,9 @@ struct VariationalFillOptions {
   double tangentGuideWeight = 1e-4; // soft pull of the cross-boundary derivative towards `across`
   int initialSpans = 10;          // spans along the longer domain side before refinement
   int maxControlPoints = 2500;   // refinement stops before exceeding this many poles
+  int minSamplesPerSplit = 4;    // a span is split only while it holds this many boundary samples: a
+                                 // span finer than the samples is pinned by none of them and rings
+                                 // between them (seen as G0 misses between samples on real edges)
   int maxRefinements = 7;        // knot-insertion rounds
   int multiplierIterations = 40; // augmented-Lagrangian rounds per solve
   double multiplierMargin = 0.01;// rounds continue until every error is below this fraction of its tolerance
@@ -83,6 +87,7 @@ struct VariationalFillResult {
   double worstRatio = 0;       // the worst error relative to its tolerance at the samples
   bool cancelled = false;
   int refinements = 0;
+  bool samplesTooSparse = false;  // refinement stopped where the spans hold too few samples to split
   std::vector<int> violatingSamples;
   std::vector<std::string> warnings;
 };
