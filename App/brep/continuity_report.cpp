@@ -41,7 +41,8 @@ void writeJsonFields(JsonWriter& j, const ContinuityReport& r) {
   j.key("per_edge").beginArray();
   for (const auto& e : r.edges)
     j.beginObject().field("edge", e.edgeIndex).field("g0", e.g0).field("g1", e.g1).field("g2", e.g2)
-        .field("g0_face", e.g0Face).field("tolerance", e.tolerance).endObject();
+        .field("g0_face", e.g0Face).field("tolerance", e.tolerance).field("tolerance_before", e.toleranceBefore)
+        .field("g1_floor", e.g1Floor).endObject();
   j.endArray();
 }
 
@@ -51,7 +52,7 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
   r.scale = hole.scale;
   for (const auto& he : hole.edges) {
     const double tol = BRep_Tool::Tolerance(he.edge);
-    r.edges.push_back({he.edgeIndex, 0, 0, 0, 0, tol});
+    r.edges.push_back({he.edgeIndex, 0, 0, 0, 0, tol, he.tolerance, 0});
     r.edgeTolerance = std::max(r.edgeTolerance, tol);
   }
   std::vector<BRepAdaptor_Curve> curves;
@@ -103,6 +104,7 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
         curves[best].D1(bestT, p, d1);
         if (d1.Magnitude() > 1e-12) {
           const Eigen::Vector3d T = toEigen(d1).normalized();
+          r.edges[best].g1Floor = std::max(r.edges[best].g1Floor, std::asin(std::min(1.0, std::abs(nb.dot(T)))));
           const Eigen::Vector3d acrossB = nb.cross(T).normalized();
           const Eigen::Vector3d nfa = nf.dot(nb) < 0 ? Eigen::Vector3d(-nf) : nf;
           const Eigen::Vector3d acrossF = nfa.cross(T).normalized();
@@ -160,6 +162,7 @@ ContinuityReport faceContinuity(const TopoDS_Shape& model, int a, int b, const C
     he.edgeIndex = edges.FindIndex(e);
     he.support = fa;
     he.supportIndex = a;
+    he.tolerance = BRep_Tool::Tolerance(e);
     hole.edges.push_back(he);
     BRepBndLib::Add(e, box);
   }

@@ -26,7 +26,12 @@ struct EdgeContinuity {
   int edgeIndex = 0;  // hole edge (FreeCAD Edge<k> of the model)
   double g0 = 0, g1 = 0, g2 = 0;
   double g0Face = 0;     // against the neighbour face through its pcurve
-  double tolerance = 0;  // the edge's own BRep tolerance (how far it may lie off its neighbour)
+  double tolerance = 0;  // the edge's own BRep tolerance now (how far it may lie off its neighbour)
+  double toleranceBefore = 0;  // ... as it was when the hole was found (HoleEdge::tolerance)
+  // The model's own accuracy at this edge: the largest angle between the edge's 3D curve and the
+  // neighbour's tangent plane. A surface through the curve cannot meet the neighbour's normal
+  // closer than this (0 on an exact model; an imported model's inexact edges reach 1e-3 rad).
+  double g1Floor = 0;
 };
 
 // One boundary sample with its deviations, for drawing the boundary coloured by continuity.

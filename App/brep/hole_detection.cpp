@@ -82,6 +82,7 @@ void finishHole(Hole& h, const HoleDetectionOptions& opt) {
     if (he.cornerAtStart) ++h.corners;
     BRepAdaptor_Curve c(he.edge);
     he.length = GCPnts_AbscissaPoint::Length(c);
+    he.tolerance = BRep_Tool::Tolerance(he.edge);
     h.length += he.length;
     const bool rev = he.edge.Orientation() == TopAbs_REVERSED;
     for (int i = 0; i <= 8; ++i) {

@@ -36,6 +36,8 @@ struct HoleEdge {
   bool cornerAtStart = false;  // tangent break with the previous edge of the loop at this edge's start
   double turnAtStart = 0.0;    // angle between incoming and outgoing tangents there (radians)
   double length = 0.0;
+  double tolerance = 0.0;      // the edge's BRep tolerance when the hole was found: how closely the model
+                               // itself places it (an imported model's edges may lie that far off their faces)
 };
 
 struct Hole {

@@ -60,6 +60,7 @@ const char* kUsage =
     "                [--face-out FACE.brep] [--method auto|np|mvc|uvtran|support] [--continuity G0|G1|G2]\n"
     "                [--tolerance T] [--angular-tolerance RAD] [--weights UVTRAN.pt] [--json]\n"
     "                [--edge-continuity Edge5=G0,Edge7=G1,...] [--no-crease-detection] [--volume] [--check-model]\n"
+    "                [--no-model-accuracy] (edges of an inexact model are judged to its own accuracy unless given)\n"
     "                (creases found at the loop's corners are asked G0 unless --no-crease-detection)\n"
     "                [--divide CURVE.brep]  two adjacent holes: the loop split by the one edge in CURVE.brep\n"
     "                (running from one loop vertex to another), filled as two faces sharing it\n"
@@ -110,7 +111,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection", "--volume", "--check-model"};  // --no-refine: mesh-fill and gnurbs
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection", "--volume", "--check-model", "--no-model-accuracy"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -241,6 +242,7 @@ int cmdFill(const Args& a) {
   o.edges.detectCreases = !a.has("--no-crease-detection");
   o.computeVolume = a.has("--volume");
   o.checkModel = a.has("--check-model");
+  o.modelAccuracy = !a.has("--no-model-accuracy");
   TopoDS_Shape shape = readShape(a.input);
   if (a.has("--divide")) return fillAdjacent(a, shape, o);
   o.copyModel = false;  // the model was read for this fill alone

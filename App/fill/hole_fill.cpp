@@ -60,15 +60,37 @@ std::string edgeList(const std::vector<int>& e) {
 int statusRank(FillStatus s) { return s == FillStatus::Ok ? 0 : s == FillStatus::ToleranceNotMet ? 1 : 2; }
 
 // The worst error of a fill's report relative to its tolerance, over what each edge was asked.
+// What loop edge i is judged against. With opt.modelAccuracy no stricter than the model itself is
+// there: G0 within the edge's own tolerance where that is the larger, G1 within the tolerance
+// beyond the angle at which the neighbour meets the edge's curve (its g1Floor). `relaxed`: the
+// edge passes only thanks to that.
+struct EdgeAllowance {
+  double g0, g1, g2;
+  bool relaxed = false;
+};
+
+EdgeAllowance allowance(const HoleFillResult& r, const HoleFillOptions& opt, size_t i) {
+  EdgeAllowance a{r.g0Tolerance, opt.angularTolerance, opt.curvatureTolerance};
+  if (!opt.modelAccuracy || i >= r.report.edges.size() || i >= r.hole.edges.size()) return a;
+  const EdgeContinuity& e = r.report.edges[i];
+  a.g0 = std::max(a.g0, r.hole.edges[i].tolerance);
+  a.g1 += e.g1Floor;
+  a.relaxed = (e.g0 > r.g0Tolerance && e.g0 <= a.g0) ||
+              (r.edgeRequests[i].asked >= Continuity::G1 && e.g1 > opt.angularTolerance && e.g1 <= a.g1);
+  return a;
+}
+
+// The worst error of a fill's report relative to what each edge was asked and is allowed.
 double reportRatio(const HoleFillResult& r, const HoleFillOptions& opt) {
   double w = 0;
-  for (const EdgeRequest& q : r.edgeRequests)
-    for (const auto& e : r.report.edges)
-      if (e.edgeIndex == q.edgeIndex) {
-        w = std::max(w, e.g0 / r.g0Tolerance);
-        if (q.asked >= Continuity::G1) w = std::max(w, e.g1 / opt.angularTolerance);
-        if (q.asked == Continuity::G2) w = std::max(w, e.g2 / opt.curvatureTolerance);
-      }
+  for (size_t i = 0; i < r.edgeRequests.size() && i < r.report.edges.size(); ++i) {
+    const EdgeRequest& q = r.edgeRequests[i];
+    const EdgeContinuity& e = r.report.edges[i];
+    const EdgeAllowance a = allowance(r, opt, i);
+    w = std::max(w, e.g0 / a.g0);
+    if (q.asked >= Continuity::G1) w = std::max(w, e.g1 / a.g1);
+    if (q.asked == Continuity::G2) w = std::max(w, e.g2 / a.g2);
+  }
   return w;
 }
 
@@ -80,10 +102,11 @@ bool betterFill(const HoleFillResult& a, const HoleFillResult& b, const HoleFill
   return reportRatio(a, opt) < reportRatio(b, opt);
 }
 
+void classify(HoleFillResult& r, const HoleFillOptions& opt);
+
 // Checks a built face (not yet sewn): validity of the face and of the neighbours whose edges
-// received its pcurves, the continuity report, per-edge levels reached, status and message.
+// received its pcurves, the continuity report, then classify.
 void judge(HoleFillResult& r, const HoleFillOptions& opt, bool checkNeighbours) {
-  r.faultyEdges.clear();
   r.faceValid = BRepCheck_Analyzer(r.face).IsValid();
   // The model is judged on what the fill changed: the new face and the neighbours whose edges
   // received its pcurves, each of them only if it was valid before (an imported model is often
@@ -102,15 +125,23 @@ void judge(HoleFillResult& r, const HoleFillOptions& opt, bool checkNeighbours) 
       }
     }
   r.report = continuityReport(r.face, r.hole);
+  classify(r, opt);
+}
+
+// From a judged face's validity and report: per-edge levels reached, status and message.
+void classify(HoleFillResult& r, const HoleFillOptions& opt) {
+  r.faultyEdges.clear();
   // Per edge: the highest level reached. The fill reaches k when every edge reaches k, or as
   // much as was asked of it where that is less than the request (a crease asked G0).
   r.edgeReached.assign(r.edgeRequests.size(), -1);
-  for (size_t i = 0; i < r.edgeRequests.size(); ++i) {
+  std::vector<int> relaxed;
+  for (size_t i = 0; i < r.edgeRequests.size() && i < r.report.edges.size(); ++i) {
     const EdgeRequest& q = r.edgeRequests[i];
-    for (const auto& e : r.report.edges)
-      if (e.edgeIndex == q.edgeIndex)
-        r.edgeReached[i] = e.g0 > r.g0Tolerance ? -1 : (e.g1 > opt.angularTolerance ? 0 : (e.g2 > opt.curvatureTolerance ? 1 : 2));
+    const EdgeContinuity& e = r.report.edges[i];
+    const EdgeAllowance a = allowance(r, opt, i);
+    r.edgeReached[i] = e.g0 > a.g0 ? -1 : (e.g1 > a.g1 ? 0 : (e.g2 > a.g2 ? 1 : 2));
     if (r.edgeReached[i] < static_cast<int>(q.asked)) r.faultyEdges.push_back(q.edgeIndex);
+    else if (a.relaxed) relaxed.push_back(q.edgeIndex);
   }
   int reached = -1;
   for (int k = 2; k >= 0 && reached < 0; --k) {
@@ -141,6 +172,9 @@ void judge(HoleFillResult& r, const HoleFillOptions& opt, bool checkNeighbours) 
       if (q.asked < opt.continuity) ++(q.source == "crease" ? creases : lowered);
     if (creases) r.message += "; G0 asked on " + std::to_string(creases) + " crease edge(s)";
     if (lowered) r.message += "; less than " + r.requested + " asked on " + std::to_string(lowered) + " edge(s)";
+    if (!relaxed.empty())
+      r.message += "; " + edgeList(relaxed) + " met only to the model's own accuracy there (its edge tolerance, "
+                   "or the angle at which its neighbour meets it: tolerance_before and g1_floor per edge)";
   }
 }
 
@@ -337,6 +371,10 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     // far, plus this attempt's face, report and status). The face leaves the edges again
     // (detachFace), so the next candidate is built and judged on the edges as the model had them;
     // the one kept is put back on and sewn.
+    // Candidates are compared, and resampled, by the tiers as they are, so that a model's own
+    // inaccuracy never stops the search at a worse face; the one kept is then classified as asked.
+    HoleFillOptions strict = opt;
+    strict.modelAccuracy = false;
     auto judged = [&](const FillAttempt& a, const Sampled& sd, FaceBuildResult& built) {
       HoleFillResult ri = r;
       ri.chosenMethod = a.method;
@@ -364,7 +402,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         r.timings.build += since(tb);
         at = FillStage::Check;
         tb = Clock::now();
-        judge(ri, opt, opt.sew);
+        judge(ri, strict, opt.sew);
         detachFace(hole, built);
         r.timings.check += since(tb);
       } catch (const Error& e) {
@@ -420,7 +458,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         const HoleFillResult& ri = results.back();
         a.built = !builds.back().face.IsNull();
         a.status = ri.status;
-        a.reportRatio = reportRatio(ri, opt);
+        a.reportRatio = reportRatio(ri, strict);
         // Denser samples pay for a fill that met its tolerances at its samples but not between
         // them, or whose refinement ran out of samples to split spans by; a third density only
         // when the second did better than the first.
@@ -430,7 +468,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         tries.push_back(toString(a.method) + (density > 1 ? " (" + std::to_string(density) + "x samples)" : "") + ": " +
                         toString(ri.status) + ", worst " + std::to_string(a.reportRatio) + " x tolerance");
         r.candidates.push_back(std::move(a));
-        if (!best || betterFill(ri, results[*best], opt)) best = results.size() - 1, keptCandidate = r.candidates.size() - 1;
+        if (!best || betterFill(ri, results[*best], strict)) best = results.size() - 1, keptCandidate = r.candidates.size() - 1;
         if (!denser) break;
       }
       if (best && results[*best].status == FillStatus::Ok) break;
@@ -451,6 +489,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       }
       r.timings.build += since(tb);
     }
+    if (results[*best].status != FillStatus::Failed) classify(results[*best], opt);
     r.candidates[keptCandidate].kept = true;
     std::vector<FillAttempt> candidates = std::move(r.candidates);
     FillTimings timings = r.timings;

@@ -33,6 +33,10 @@ struct HoleFillOptions {
   double tolerance = 0.0;           // G0 tolerance, model units; 0 means 1e-6 x hole scale (DESIGN strict tier)
   double angularTolerance = 1e-3;   // G1 tolerance, radians
   double curvatureTolerance = 0.1;  // G2 tolerance, relative
+  bool modelAccuracy = true;        // judge each edge no stricter than the model is there: G0 within the edge's
+                                    // own BRep tolerance where larger, G1 within angularTolerance beyond the angle
+                                    // at which the neighbour meets the edge's curve (continuity_report.h g1Floor);
+                                    // the message names the edges that pass only so. false: the tiers as they are
   HoleDetectionOptions detection;
   BoundarySamplingOptions sampling;
   ParameterizationOptions parameterization;

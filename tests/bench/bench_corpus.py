@@ -45,12 +45,17 @@ EXTRA = os.environ.get("BENCH_FILL_ARGS", "").split()  # e.g. --no-crease-detect
 TIMEOUT = 120
 
 
-def judge(per_edge, truth, g0r):
+def judge(per_edge, truth, g0r, scale):
     cls = {e["edge"]: e["class"] for e in truth["per_edge"]}
     g1 = max([e["g1"] for e in per_edge if cls.get(e["edge"]) != "crease"] or [0.0])
     g2 = max([e["g2"] for e in per_edge if cls.get(e["edge"]) == "g2"] or [0.0])
+    # Strict, or no worse than the input model is at each edge: G0 within the edge's own tolerance
+    # (as the model had it) where that is larger, G1 within 1e-3 rad beyond the angle at which the
+    # neighbour meets the edge's curve (the report's g1_floor; no surface through the curve does better).
+    model = all(e["g0"] <= max(1e-6 * scale, e.get("tolerance_before", 0.0)) and
+                (cls.get(e["edge"]) == "crease" or e["g1"] <= 1e-3 + e.get("g1_floor", 0.0)) for e in per_edge)
     return {"g0r": g0r, "g1_tangent": g1, "g2": g2, "strict": g0r <= 1e-6 and g1 <= 1e-3,
-            "loose": g0r <= 1e-4 and g1 <= 1e-2, "g2_ok": g2 <= 0.1}
+            "model": model, "loose": g0r <= 1e-4 and g1 <= 1e-2, "g2_ok": g2 <= 0.1}
 
 
 def run_ours(path, truth, method):
@@ -68,7 +73,7 @@ def run_ours(path, truth, method):
         rep = json.loads(p.stdout)[0]
     r = {"ok": rep["face_valid"], "time": dt, "core": rep["timings"]["total"], "solve": rep["timings"]["solve"],
          "status": rep["status"], "method": rep["method"], "achieved": rep["achieved"], "shape_valid": rep["shape_valid"]}
-    r.update(judge(rep["per_edge"], truth, rep["g0_relative"]))
+    r.update(judge(rep["per_edge"], truth, rep["g0_relative"], rep["scale"]))
     return r
 
 
@@ -81,7 +86,7 @@ def run_geomplate(doc, shape, hole, truth, order):
                     "error": "face produced but not valid (BRepCheck)" if produced else f.getStatusString()}
         rep = HoleFill.continuityReport(f.Shape.Faces[0], shape, hole)
         r = {"ok": True, "time": dt, "core": dt, "produced": True}
-        r.update(judge(rep["per_edge"], truth, rep["g0_relative"]))
+        r.update(judge(rep["per_edge"], truth, rep["g0_relative"], rep["scale"]))
         return r
     except Exception as e:
         return {"ok": False, "time": dt, "error": str(e)[:200]}
@@ -96,14 +101,15 @@ def row(label, rs):
     g2set = [r for r in rs if r["surround"] == "g2"]
     ts = [r["time"] for r in rs]
     cores = [r.get("core", r["time"]) for r in ok] or [float("nan")]
-    return "| %s | %d | %d | %.1f%% | %.1f%% | %s | %.3f | %.3f | %.3f |" % (
-        label, n, n - len(ok), 100.0 * sum(r["strict"] for r in ok) / n, 100.0 * sum(r["loose"] for r in ok) / n,
+    return "| %s | %d | %d | %.1f%% | %.1f%% | %.1f%% | %s | %.3f | %.3f | %.3f |" % (
+        label, n, n - len(ok), 100.0 * sum(r["strict"] for r in ok) / n, 100.0 * sum(r.get("model", r["strict"]) for r in ok) / n,
+        100.0 * sum(r["loose"] for r in ok) / n,
         ("%.0f%% of %d" % (100.0 * sum(r["ok"] and r["g2_ok"] for r in g2set) / len(g2set), len(g2set))) if g2set else "-",
         statistics.median(ts), max(ts), statistics.median(cores))
 
 
-HEADER = ["| method | holes | fail | strict G0+G1 | loose | G2 <= 0.1 (G2 surround) | CLI/recompute median s | max s | "
-          "algorithm median s |", "|---|---|---|---|---|---|---|---|---|"]
+HEADER = ["| method | holes | fail | strict G0+G1 | strict at the model's accuracy | loose | G2 <= 0.1 (G2 surround) | "
+          "CLI/recompute median s | max s | algorithm median s |", "|---|---|---|---|---|---|---|---|---|---|"]
 
 
 def main():

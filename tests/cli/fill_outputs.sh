@@ -25,6 +25,10 @@ check "--hole all fills both holes of a sheet" "[ \$(grep -c '^hole' $T/both.txt
 "$H" fill "$T/panel_6_sided.brep" --edges "$edge" --edge-continuity "$edge=G0" --out "$T/ec.brep" --json >"$T/ec.json"
 check "--edge-continuity asks G0 of $edge, G1 of the others, and says so per edge" \
   "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))[0]; p={\"Edge%d\" % e[\"edge\"]: e for e in r[\"edge_continuity\"]}; assert r[\"status\"]==\"ok\" and p[sys.argv[2]][\"asked\"]==\"G0\" and p[sys.argv[2]][\"source\"]==\"override\" and all(e[\"asked\"]==\"G1\" for k, e in p.items() if k != sys.argv[2])' $T/ec.json $edge"
+# Per edge, the model's own accuracy beside the errors; --no-model-accuracy judges by the tiers alone.
+"$H" fill "$T/panel_6_sided.brep" --edges "$edge" --no-model-accuracy --out "$T/nma.brep" --json >"$T/nma.json"
+check "per_edge reports tolerance_before and g1_floor; --no-model-accuracy is accepted" \
+  "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))[0]; assert r[\"status\"]==\"ok\" and all(e[\"g1_floor\"] < 1e-6 and e[\"tolerance_before\"] > 0 for e in r[\"per_edge\"])' $T/nma.json"
 # Regression: `render --faces 1` (space form) is a face list, not fit-points' --faces flag.
 "$H" render "$T/panel_6_sided.brep" --out "$T/faces.png" --size 160x120 --faces 1 >/dev/null 2>"$T/faces.err"
 check "render --faces 1 (space form) draws the listed face" "[ -s $T/faces.png ] && [ ! -s $T/faces.err ]"

@@ -1,0 +1,80 @@
+#include "brep/continuity_report.h"
+
+#include <gtest/gtest.h>
+
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <filesystem>
+
+#include "brep/sample_models.h"
+#include "brep/shape_io.h"
+
+using namespace holefill;
+
+namespace {
+
+// The first solid of an OCCT sample model (Debian's occt-misc) without its k-th face (1-based, in
+// TopExp order, as FreeCAD numbers them): a real part with a hole, the face kept as its truth.
+bool partWithoutFace(const std::string& file, int k, TopoDS_Shape& holed, TopoDS_Face& removed) {
+  const std::string path = "/usr/share/opencascade/data/occ/" + file;
+  if (!std::filesystem::exists(path)) return false;
+  TopoDS_Shape part = readShape(path);
+  TopExp_Explorer solids(part, TopAbs_SOLID);
+  if (solids.More()) part = solids.Current();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(part, TopAbs_FACE, faces);
+  BRep_Builder B;
+  TopoDS_Shell shell;
+  B.MakeShell(shell);
+  for (int i = 1; i <= faces.Extent(); ++i)
+    if (i == k) removed = TopoDS::Face(faces(i));
+    else B.Add(shell, faces(i));
+  holed = shell;
+  return !removed.IsNull();
+}
+
+}  // namespace
+
+TEST(ContinuityReport, ExactNeighboursHaveNoFloor) {
+  // An OCCT-made cylinder is exact: its side meets its cap along the circle with the edge lying
+  // in both faces (g1Floor ~ 0) at OCCT's default tolerance, at a right angle (G1 = pi/2).
+  const TopoDS_Shape cyl = BRepPrimAPI_MakeCylinder(10, 30).Shape();
+  const ContinuityReport r = faceContinuity(cyl, 1, 2);
+  ASSERT_FALSE(r.edges.empty());
+  for (const auto& e : r.edges) {
+    EXPECT_LT(e.g1Floor, 1e-9);
+    EXPECT_LE(e.toleranceBefore, 1e-6);
+    EXPECT_NEAR(e.g1, M_PI / 2, 1e-6);
+    EXPECT_LT(e.g0, 1e-9);
+  }
+}
+
+TEST(ContinuityReport, InexactNeighboursShowTheirOwnAccuracy) {
+  // Top.brep face 138 (a B-spline patch from an imported model): its edges' 3D curves lie off their
+  // neighbours by up to their tolerances, and the neighbours meet them at an angle. The report gives
+  // the original face's own errors against the hole, beside what the model allows at each edge.
+  TopoDS_Shape holed;
+  TopoDS_Face truth;
+  if (!partWithoutFace("Top.brep", 138, holed, truth)) GTEST_SKIP() << "occt-misc's Top.brep is not installed";
+  const HoleDetectionResult det = detectHoles(holed);
+  ASSERT_EQ(det.holes.size(), 1u);
+  const ContinuityReport r = continuityReport(truth, det.holes[0]);
+  ASSERT_EQ(r.edges.size(), det.holes[0].edges.size());
+  double worstFloor = 0, worstTolerance = 0;
+  for (size_t i = 0; i < r.edges.size(); ++i) {
+    EXPECT_EQ(r.edges[i].toleranceBefore, det.holes[0].edges[i].tolerance);
+    worstFloor = std::max(worstFloor, r.edges[i].g1Floor);
+    worstTolerance = std::max(worstTolerance, r.edges[i].toleranceBefore);
+    // The original face is no better than the model allows: its G1 error is at least near the floor.
+    EXPECT_GE(r.edges[i].g1 + 1e-6, 0.5 * r.edges[i].g1Floor);
+  }
+  EXPECT_GT(worstFloor, 1e-5);                 // the model's own angle between edge and neighbour
+  EXPECT_GT(worstTolerance, 1e-6 * r.scale);   // an edge placed less exactly than the strict tier
+  EXPECT_GT(r.g0Relative, 1e-6);               // so even the original face misses the strict G0 tier
+}
