@@ -33,7 +33,6 @@
 #include <algorithm>
 #include <map>
 #include <memory>
-#include <optional>
 
 #include "geometry/error.h"
 #include "geometry/occt_bridge.h"
@@ -120,61 +119,58 @@ void detachFace(const Hole& hole, const FaceBuildResult& built) {
 
 namespace {
 
-// Which side of the closed shell the new face's normal points to, by rays: from a point inside
-// the face along its (oriented) normal, the ray crosses the rest of the shell an even number of
-// times when the normal points out of the solid. Only faces whose bounding box the ray meets are
-// intersected, so this costs a few faces' intersectors instead of a classifier over the whole
-// model (BRepLib::OrientClosedSolid: 100 ms of a 130 ms fill on a 1.5 MB model). Three rays from
-// different points of the face must agree and none may graze an edge or a face; else no answer.
-std::optional<bool> normalPointsOut(const TopoDS_Shell& shell, const TopoDS_Face& face) {
+// Whether the closed shell is oriented outward, by rays: from three points inside the given faces
+// (the new face's neighbours: original faces, whose geometry is trusted) along their oriented
+// normals, each ray must leave without meeting any face of the shell, the new one included. Only
+// faces whose bounding box the ray's line meets are intersected, so this costs a few faces'
+// intersectors instead of a classifier over the whole model (BRepLib::OrientClosedSolid took 100 ms
+// of a 130 ms fill on a 1.5 MB model). A ray that meets the shell again proves nothing on its own
+// (a missed or grazing crossing would flip its parity), so then there is no answer (false). Rays
+// from the new face itself were tried first and were fooled by a fill that overlaps itself.
+bool raysLeaveOutward(const TopoDS_Shell& shell, const std::vector<TopoDS_Face>& from) {
   std::vector<std::pair<TopoDS_Face, Bnd_Box>> boxes;
   for (TopExp_Explorer ex(shell, TopAbs_FACE); ex.More(); ex.Next()) {
     const TopoDS_Face f = TopoDS::Face(ex.Current());
-    if (f.IsSame(face)) continue;
     Bnd_Box b;
     BRepBndLib::Add(f, b, Standard_False);
     boxes.emplace_back(f, b);
   }
-  BRepAdaptor_Surface S(face);
-  const double u0 = S.FirstUParameter(), u1 = S.LastUParameter(), v0 = S.FirstVParameter(), v1 = S.LastVParameter();
-  BRepClass_FaceClassifier inside;
-  const double tol = BRep_Tool::Tolerance(face);
-  std::map<int, std::unique_ptr<IntCurvesFace_Intersector>> intersectors;  // built once per face hit
-  int out = 0, in = 0;
-  // Points of a 5x5 grid of the trimmed face's bounds, centre first: the first three inside.
+  std::map<size_t, std::unique_ptr<IntCurvesFace_Intersector>> intersectors;  // built once per face met
+  int escaped = 0;
+  // Points of a 5x5 grid of each face's parameter bounds, centre first, while inside the face.
   const double grid[5] = {0.5, 0.3, 0.7, 0.15, 0.85};
-  for (int a = 0; a < 5 && out + in < 3; ++a)
-    for (int b = 0; b < 5 && out + in < 3; ++b) {
-      const gp_Pnt2d uv(u0 + grid[a] * (u1 - u0), v0 + grid[b] * (v1 - v0));
-      inside.Perform(face, uv, tol);
-      if (inside.State() != TopAbs_IN) continue;
-      gp_Pnt p;
-      gp_Vec du, dv;
-      S.D1(uv.X(), uv.Y(), p, du, dv);
-      gp_Vec n = du.Crossed(dv);
-      if (n.Magnitude() < 1e-12 * (1 + du.Magnitude() * dv.Magnitude())) continue;
-      n.Normalize();
-      if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
-      const gp_Lin ray(p, gp_Dir(n));
-      int hits = 0;
-      bool clean = true;
-      for (size_t k = 0; k < boxes.size() && clean; ++k) {
-        if (boxes[k].second.IsOut(ray)) continue;
-        auto& I = intersectors[static_cast<int>(k)];
-        if (!I) I = std::make_unique<IntCurvesFace_Intersector>(boxes[k].first, Precision::Confusion());
-        I->Perform(ray, 0.0, Precision::Infinite());
-        if (!I->IsDone()) { clean = false; break; }
-        for (int h = 1; h <= I->NbPnt(); ++h) {
-          if (I->WParameter(h) <= 10 * tol) continue;  // the start point's own neighbourhood
-          if (I->State(h) != TopAbs_IN || I->Transition(h) == IntCurveSurface_Tangent) clean = false;
-          ++hits;
+  for (const TopoDS_Face& face : from) {
+    BRepAdaptor_Surface S(face);
+    const double u0 = S.FirstUParameter(), u1 = S.LastUParameter(), v0 = S.FirstVParameter(), v1 = S.LastVParameter();
+    const double tol = BRep_Tool::Tolerance(face);
+    BRepClass_FaceClassifier inside;
+    for (int a = 0; a < 5; ++a)
+      for (int b = 0; b < 5; ++b) {
+        const gp_Pnt2d uv(u0 + grid[a] * (u1 - u0), v0 + grid[b] * (v1 - v0));
+        inside.Perform(face, uv, tol);
+        if (inside.State() != TopAbs_IN) continue;
+        gp_Pnt p;
+        gp_Vec du, dv;
+        S.D1(uv.X(), uv.Y(), p, du, dv);
+        gp_Vec n = du.Crossed(dv);
+        if (n.Magnitude() < 1e-12 * (1 + du.Magnitude() * dv.Magnitude())) continue;
+        n.Normalize();
+        if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
+        const gp_Lin ray(p, gp_Dir(n));
+        for (size_t k = 0; k < boxes.size(); ++k) {
+          if (boxes[k].first.IsSame(face) || boxes[k].second.IsOut(ray)) continue;
+          auto& I = intersectors[k];
+          if (!I) I = std::make_unique<IntCurvesFace_Intersector>(boxes[k].first, Precision::Confusion());
+          I->Perform(ray, 0.0, Precision::Infinite());
+          if (!I->IsDone()) return false;
+          for (int h = 1; h <= I->NbPnt(); ++h)
+            if (I->WParameter(h) > 10 * tol) return false;  // met the shell again
         }
+        if (++escaped == 3) return true;
+        a = b = 5;  // one ray per face: three faces agree
       }
-      if (!clean) continue;
-      ++(hits % 2 == 0 ? out : in);
-    }
-  if (out + in < 3 || (out && in)) return std::nullopt;
-  return out > 0;
+  }
+  return false;
 }
 
 // The new face runs along each shared edge opposite to the neighbour on the other side (a
@@ -234,13 +230,16 @@ SewResult sewFace(const TopoDS_Shape& model, const TopoDS_Face& face, bool compu
     if (ms.IsDone()) {
       TopoDS_Solid solid = ms.Solid();
       // The shell keeps the model's face orientations and the new face is oriented with them
-      // (it reuses the loop's edges): only the whole solid may need turning inside out.
-      const std::optional<bool> outward = orientedLikeItsNeighbours(face, edgeFaces) ? normalPointsOut(shell, face) : std::nullopt;
-      if (outward) {
-        if (!*outward) solid.Reverse();
-      } else {
+      // (it reuses the loop's edges): only the whole solid may need turning inside out, which it
+      // need not when rays from the neighbours leave it.
+      std::vector<TopoDS_Face> neighbours;
+      for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
+        if (edgeFaces.Contains(ex.Current()))
+          for (const TopoDS_Shape& f : edgeFaces.FindFromKey(ex.Current()))
+            if (std::none_of(neighbours.begin(), neighbours.end(), [&](const TopoDS_Face& g) { return g.IsSame(f); }))
+              neighbours.push_back(TopoDS::Face(f));
+      if (!orientedLikeItsNeighbours(face, edgeFaces) || !raysLeaveOutward(shell, neighbours))
         BRepLib::OrientClosedSolid(solid);
-      }
       if (computeVolume) {
         GProp_GProps props;
         BRepGProp::VolumeProperties(solid, props);

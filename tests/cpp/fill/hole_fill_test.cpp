@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
@@ -289,4 +291,36 @@ TEST(HoleFill, InexactNeighboursAreJudgedAtTheModelsOwnAccuracy) {
   }
   EXPECT_NEAR(r.report.g0, s.report.g0, 1e-12);  // the same face: the search itself stays strict
   EXPECT_EQ(r.polesU, s.polesU);
+}
+
+// A closed result is oriented outward whichever way its orientation is decided: by rays from the
+// new face that escape (a wall of a U-shaped block facing out), or by the whole-model classifier
+// when a ray meets the block again (the slot's inner wall faces the opposite wall), and also when
+// the input shell itself was inside out.
+TEST(HoleFill, ClosedResultsAreOrientedOutward) {
+  const TopoDS_Shape block = BRepPrimAPI_MakeBox(60, 40, 30).Shape();
+  const TopoDS_Shape slot = BRepPrimAPI_MakeBox(gp_Pnt(20, -1, 10), gp_Pnt(40, 41, 31)).Shape();
+  const TopoDS_Shape u = BRepAlgoAPI_Cut(block, slot).Shape();
+  const double volume = 60.0 * 40 * 30 - 20.0 * 40 * 20;
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(u, TopAbs_FACE, faces);
+  int checked = 0;
+  for (int k = 1; k <= faces.Extent(); ++k) {
+    for (const bool inverted : {false, true}) {
+      BRep_Builder B;
+      TopoDS_Shell shell;
+      B.MakeShell(shell);
+      for (int i = 1; i <= faces.Extent(); ++i)
+        if (i != k) B.Add(shell, inverted ? faces(i).Reversed() : faces(i));
+      HoleFillOptions o;
+      o.computeVolume = true;
+      o.autoUvtran = false;
+      const HoleFillResult r = fillHole(shell, 0, o);
+      ASSERT_NE(r.status, FillStatus::Failed) << "face " << k << ": " << r.message;
+      ASSERT_TRUE(r.closedSolid) << "face " << k;
+      EXPECT_NEAR(r.volume, volume, 1e-3 * volume) << "face " << k << (inverted ? " (inside-out input)" : "");
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2 * 10);  // the U block has ten faces
 }
