@@ -339,13 +339,27 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         for (const auto& x : sd.unit) {
           c.uv.push_back(a.P.uv[c.uv.size()]);
           c.point.push_back(x.point);
-          c.normal.push_back(x.normal);
+          // The normal a surface through the edge's curve can have that is nearest the support's:
+          // on an inexact edge (its curve not in the support's tangent plane) the support normal
+          // itself is out of reach, and chasing it beside G0 made the fill ripple.
+          const Eigen::Vector3d reachable = x.normal - x.normal.dot(x.tangent) * x.tangent;
+          c.normal.push_back(reachable.norm() > 0.5 ? reachable.normalized() : x.normal);
           c.across.push_back(x.across);
           c.curvature.push_back(x.curvature);
           c.weight.push_back(x.weight);
           c.normalValid.push_back(x.normalValid);
           c.edge.push_back(x.edge);
           c.order.push_back(static_cast<int>(r.edgeRequests[x.edge].asked));
+        }
+        // Where one edge ends and the next begins, an inexact model's two curves may stop apart
+        // (within their vertex's tolerance), and the pcurve sends both ends to one corner of the
+        // domain: no surface meets both, and chasing them rippled the fill around the corner.
+        // Both aim at the midpoint, which the vertex's tolerance covers.
+        for (size_t k = 0; k < c.point.size(); ++k) {
+          const size_t next = (k + 1) % c.point.size();
+          if (c.edge[next] == c.edge[k]) continue;
+          const Eigen::Vector3d mid = 0.5 * (c.point[k] + c.point[next]);
+          c.point[k] = c.point[next] = mid;
         }
         c.referenceUV = a.P.interiorUV;
         c.referenceXYZ = a.P.interiorXYZ;

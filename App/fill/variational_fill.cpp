@@ -388,6 +388,9 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     for (double k : newU) U.insert(std::upper_bound(U.begin(), U.end(), k), k);
     for (double k : newV) V.insert(std::upper_bound(V.begin(), V.end(), k), k);
   }
+  if (std::getenv("HOLEFILL_DEBUG"))
+    for (int k : bestErr.violating)
+      std::fprintf(stderr, "[fill] violating sample %d (edge %d) at uv (%.4g %.4g)\n", k, c.edge[k], c.uv[k].x(), c.uv[k].y());
   res.g0 = bestErr.g0;
   res.g1 = bestErr.g1;
   res.g2 = bestErr.g2;

@@ -58,6 +58,18 @@ Handle(Geom_BSplineSurface) flatSurface(const Parameterization& P, double z) {
   return toOcct(s);
 }
 
+// The hole's edges are as `expected` says, and carry the built face's pcurves or not.
+void expectState(const Hole& hole, const FaceBuildResult& built, const EdgeState& expected, bool attached) {
+  const EdgeState now = stateOf(hole);
+  EXPECT_EQ(now.pcurves, expected.pcurves);
+  EXPECT_EQ(now.edgeTol, expected.edgeTol);
+  EXPECT_EQ(now.vertexTol, expected.vertexTol);
+  for (const auto& he : hole.edges) {
+    double f, l;
+    EXPECT_EQ(BRep_Tool::CurveOnSurface(he.edge, built.face, f, l).IsNull(), !attached);
+  }
+}
+
 }  // namespace
 
 TEST(FaceBuilding, DetachPutsTheEdgesBackAndAttachRestoresTheFace) {
@@ -83,24 +95,9 @@ TEST(FaceBuilding, DetachPutsTheEdgesBackAndAttachRestoresTheFace) {
   EXPECT_TRUE(raised) << "the flat surface lies off the boundary: the build must raise tolerances";
 
   detachFace(hole, built);
-  const EdgeState off = stateOf(hole);
-  EXPECT_EQ(off.pcurves, before.pcurves);
-  EXPECT_EQ(off.edgeTol, before.edgeTol);
-  EXPECT_EQ(off.vertexTol, before.vertexTol);
-  for (const auto& he : hole.edges) {
-    double f, l;
-    EXPECT_TRUE(BRep_Tool::CurveOnSurface(he.edge, built.face, f, l).IsNull());
-  }
-
+  expectState(hole, built, before, false);
   attachFace(hole, built);
-  const EdgeState again = stateOf(hole);
-  EXPECT_EQ(again.pcurves, on.pcurves);
-  EXPECT_EQ(again.edgeTol, on.edgeTol);
-  EXPECT_EQ(again.vertexTol, on.vertexTol);
-  for (const auto& he : hole.edges) {
-    double f, l;
-    EXPECT_FALSE(BRep_Tool::CurveOnSurface(he.edge, built.face, f, l).IsNull());
-  }
+  expectState(hole, built, on, true);
 }
 
 TEST(FaceBuilding, SewnFaceClosesTheBoxAsASolid) {

@@ -31,24 +31,29 @@ TEST(Polygon2d, OrientationAndSelfIntersection) {
 }
 
 namespace {
-// Samples of a planar loop (a 3:1 rectangle tilted in space), corners at the rectangle's vertices.
-std::vector<BoundarySample> tiltedRectangle(Hole& hole) {
-  const Eigen::Vector3d o(1, 2, 3), a = Eigen::Vector3d(1, 1, 0).normalized() * 3, b = Eigen::Vector3d(0, 0, 1);
-  const Eigen::Vector3d corners[4] = {o, o + a, o + a + b, o + b};
+// Samples of a polygonal loop through the corners, 11 per side (ends included), a corner at each.
+std::vector<BoundarySample> polygonLoop(Hole& hole, const std::vector<Eigen::Vector3d>& corners) {
+  const int n = static_cast<int>(corners.size());
   std::vector<BoundarySample> s;
-  hole.edges.resize(4);
-  for (int e = 0; e < 4; ++e) {
+  hole.edges.resize(n);
+  for (int e = 0; e < n; ++e) {
     hole.edges[e].cornerAtStart = true;
     for (int i = 0; i <= 10; ++i) {
       BoundarySample x;
-      x.point = corners[e] + (corners[(e + 1) % 4] - corners[e]) * (i / 10.0);
+      x.point = corners[e] + (corners[(e + 1) % n] - corners[e]) * (i / 10.0);
       x.weight = 0.1;
       x.edge = e;
       s.push_back(x);
     }
   }
-  hole.corners = 4;
+  hole.corners = n;
   return s;
+}
+
+// A planar loop: a 3:1 rectangle tilted in space.
+std::vector<BoundarySample> tiltedRectangle(Hole& hole) {
+  const Eigen::Vector3d o(1, 2, 3), a = Eigen::Vector3d(1, 1, 0).normalized() * 3, b = Eigen::Vector3d(0, 0, 1);
+  return polygonLoop(hole, {o, o + a, o + a + b, o + b});
 }
 }  // namespace
 
@@ -87,21 +92,7 @@ TEST(Parameterizer, MeanValueMapsAFourSidedLoopOntoTheRectangleOfItsSides) {
 TEST(Parameterizer, MeanValueMapsOtherLoopsOntoARegularPolygonWithItsFirstSideAlongU) {
   // A planar pentagon with unequal sides: corners go to the regular pentagon of its perimeter.
   Hole hole;
-  const Eigen::Vector2d c2[5] = {{0, 0}, {4, 0}, {5, 2}, {2, 4}, {-1, 2}};
-  std::vector<BoundarySample> s;
-  hole.edges.resize(5);
-  for (int e = 0; e < 5; ++e) {
-    hole.edges[e].cornerAtStart = true;
-    for (int i = 0; i <= 10; ++i) {
-      BoundarySample x;
-      const Eigen::Vector2d q = c2[e] + (c2[(e + 1) % 5] - c2[e]) * (i / 10.0);
-      x.point = Eigen::Vector3d(q.x(), q.y(), 0.0);
-      x.weight = 0.1;
-      x.edge = e;
-      s.push_back(x);
-    }
-  }
-  hole.corners = 5;
+  const auto s = polygonLoop(hole, {{0, 0, 0}, {4, 0, 0}, {5, 2, 0}, {2, 4, 0}, {-1, 2, 0}});
   const Parameterization p = parameterize(hole, s, ParamMethod::MeanValue);
   ASSERT_EQ(p.cornerSamples.size(), 5u);
   const double side = (p.uv[p.cornerSamples[0]] - p.uv[p.cornerSamples[1]]).norm();
