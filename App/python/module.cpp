@@ -75,12 +75,13 @@ HoleFillOptions fillOptions(const std::string& method, const std::string& contin
 py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
                const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
                int maxControlPoints, const std::function<bool(double)>& progress, bool sew,
-               const std::string& edgeContinuity, bool detectCreases) {
+               const std::string& edgeContinuity, bool detectCreases, bool modelAccuracy) {
   return guarded([&] {
     const TopoDS_Shape model = shapeFromBrepString(brep);
     HoleFillOptions o = fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
                                     maxControlPoints, progress, edgeContinuity, detectCreases);
     o.sew = sew;
+    o.modelAccuracy = modelAccuracy;
     const HoleFillResult r = fillHole(model, edges, o);
     const std::string face = r.face.IsNull() ? "" : shapeToBrepString(r.face);
     const std::string shape = r.shape.IsNull() ? "" : shapeToBrepString(r.shape);
@@ -186,7 +187,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   m.def("fillHole", &fill, py::arg("brep"), py::arg("edges"), py::arg("method") = "auto", py::arg("continuity") = "G1",
         py::arg("tolerance") = 0.0, py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1,
         py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
-        py::arg("edgeContinuity") = "", py::arg("detectCreases") = true,
+        py::arg("edgeContinuity") = "", py::arg("detectCreases") = true, py::arg("modelAccuracy") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
   m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"),
         py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,

@@ -85,6 +85,23 @@ def test_mixed_crease_loop_asks_g0_on_creases_and_overrides_win():
         assert "not on the hole" in str(e)
 
 
+def test_inexact_neighbours_are_judged_at_the_models_accuracy():
+    # OCCT's Top.brep (occt-misc) without its face 138: edges placed only to their tolerance.
+    path = "/usr/share/opencascade/data/occ/Top.brep"
+    if not os.path.exists(path):
+        return
+    top = Part.Shape()
+    top.read(path)
+    part = top.Solids[0]
+    holed = Part.Shell([f for i, f in enumerate(part.Faces) if i != 137])
+    _, rep = HoleFill.fillHole(holed, 1)
+    assert rep["status"] == "ok" and "model's own accuracy" in rep["message"], rep["message"]
+    assert any(e["tolerance_before"] > 1e-6 * rep["scale"] or e["g1_floor"] > 1e-5 for e in rep["per_edge"])
+    _, strict = HoleFill.fillHole(holed, 1, modelAccuracy=False)
+    assert strict["status"] == "tolerance_not_met", strict["message"]
+    assert abs(strict["g0"] - rep["g0"]) <= 1e-12  # the same face, judged two ways
+
+
 def test_any_pick_order_gives_the_same_face():
     shape = box_without_fillet()
     edges = HoleFill.findHoles(shape)[0]["edgeIndices"]

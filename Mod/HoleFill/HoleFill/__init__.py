@@ -108,7 +108,7 @@ def _edgeIndices(shape, hole):
 
 def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
              curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None,
-             detectCreases=True):
+             detectCreases=True, modelAccuracy=True):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
@@ -122,6 +122,9 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     was sharp (creases) are asked G0 unless detectCreases is False; edgeContinuity, e.g.
     {"Edge5": "G0", "Edge7": "G1"}, sets edges explicitly. report["edge_continuity"] lists per
     edge what was asked, why (request, crease, override) and what was reached.
+    modelAccuracy: an edge of an inexact model (its own BRep tolerance above the G0 tolerance, or a
+    neighbour meeting its curve at an angle, report["per_edge"][k]["g1_floor"]) is judged no
+    stricter than the model is there, and the message names such edges; False: the tiers alone.
     Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
     The report says what was achieved; a fill that misses the request is returned with
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
@@ -133,7 +136,8 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     spec = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in (edgeContinuity or {}).items())
     face, model, rep = HoleFillApp.fillHole(_brep(shape), edges, method, continuity, float(tolerance),
                                            float(angularTolerance), float(curvatureTolerance),
-                                           int(maxControlPoints), progress, bool(sewn), spec, bool(detectCreases))
+                                           int(maxControlPoints), progress, bool(sewn), spec, bool(detectCreases),
+                                           bool(modelAccuracy))
     report = json.loads(rep)
     if report["status"] in ("failed", "cancelled"):
         where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
