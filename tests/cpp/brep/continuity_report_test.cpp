@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <cmath>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <TopExp.hxx>
@@ -77,4 +81,38 @@ TEST(ContinuityReport, InexactNeighboursShowTheirOwnAccuracy) {
   EXPECT_GT(worstFloor, 1e-5);                 // the model's own angle between edge and neighbour
   EXPECT_GT(worstTolerance, 1e-6 * r.scale);   // an edge placed less exactly than the strict tier
   EXPECT_GT(r.g0Relative, 1e-6);               // so even the original face misses the strict G0 tier
+}
+
+TEST(ContinuityReport, FilletedBoxCornerIsTangentButNotCurvatureContinuous) {
+  // The vertex blend of a box filleted with radius r is a sphere of radius r meeting three
+  // cylinders along quarter circles: tangent (G1 ~ 0), but across each edge the sphere bends by
+  // 1/r and the cylinder (along its axis) not at all, so G2 = (1/r) / (1/scale) = scale / r with
+  // scale the quarter circle's box diagonal r*sqrt(2): sqrt(2), whatever r. No fill of that corner
+  // can be G2 against the cylinders (hole_fill_test's UnreachableG2IsReportedNotDowngraded).
+  TopTools_IndexedMapOfShape boxEdges;
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(100, 80, 60).Shape();
+  BRepFilletAPI_MakeFillet fillet(box);
+  TopExp::MapShapes(box, TopAbs_EDGE, boxEdges);
+  for (int i = 1; i <= boxEdges.Extent(); ++i) fillet.Add(12.0, TopoDS::Edge(boxEdges(i)));
+  const TopoDS_Shape rounded = fillet.Shape();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(rounded, TopAbs_FACE, faces);
+  int sphere = 0;
+  for (int i = 1; i <= faces.Extent() && !sphere; ++i)
+    if (BRepAdaptor_Surface(TopoDS::Face(faces(i))).GetType() == GeomAbs_Sphere) sphere = i;
+  ASSERT_GT(sphere, 0);
+  int neighbours = 0;
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    if (i == sphere) continue;
+    ContinuityReport r;
+    try {
+      r = faceContinuity(rounded, i, sphere);
+    } catch (const std::exception&) {
+      continue;  // not adjacent
+    }
+    ++neighbours;
+    EXPECT_LT(r.g1, 1e-6);
+    EXPECT_NEAR(r.g2, std::sqrt(2.0), 1e-3);
+  }
+  EXPECT_EQ(neighbours, 3);
 }
