@@ -456,6 +456,13 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       double lastRatio = 0;
       for (int density : {1, kDensify, kDensify * kDensify}) {
         const Sampled& sd = sampled(density);
+        // Resampling is bounded: past this many samples a solve takes seconds and memory grows
+        // with it, where the user waits on an interactive fill.
+        if (density > 1 && static_cast<int>(sd.samples.size()) > opt.maxDenseSamples) {
+          tries.push_back(toString(m) + " (" + std::to_string(density) + "x samples): not tried, " +
+                          std::to_string(sd.samples.size()) + " samples exceed maxDenseSamples");
+          break;
+        }
         stage = FillStage::Parameterize;
         FillAttempt a = solveWith(m, sd, mi == 0 && density == 1);
         if (mi > 0 && m == ParamMethod::Uvtran && a.ok && a.method != ParamMethod::Uvtran) break;  // not MVC again

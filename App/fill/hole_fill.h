@@ -42,6 +42,7 @@ struct HoleFillOptions {
   ParameterizationOptions parameterization;
   VariationalFillOptions solver;    // its tolerances and continuity are set from the fields above
   double solverMargin = 0.95;       // the solver aims at this fraction of each tolerance at its samples
+  int maxDenseSamples = 12000;      // a resampled (4x, 16x) attempt is not made past this many boundary samples
   bool fillByResult = true;         // Auto fills with its pick (parameterizer.h), then with the other of
                                     // NP/MVC when the pick's face misses the tolerances (judged by the
                                     // continuity report, between the samples too), and keeps the better;
