@@ -136,17 +136,18 @@ bool raysLeaveOutward(const TopoDS_Shell& shell, const std::vector<TopoDS_Face>&
     boxes.emplace_back(f, b);
   }
   std::map<size_t, std::unique_ptr<IntCurvesFace_Intersector>> intersectors;  // built once per face met
-  int escaped = 0;
-  // Points of a 5x5 grid of each face's parameter bounds, centre first, while inside the face.
+  // A ray from a point inside `face` along its oriented normal: 1 it leaves the shell, 0 it meets
+  // it again (or an intersection failed), -1 no point of a 5x5 grid of the face's parameter
+  // bounds (centre first) is inside the face with a regular normal.
   const double grid[5] = {0.5, 0.3, 0.7, 0.15, 0.85};
-  for (const TopoDS_Face& face : from) {
+  auto rayLeaves = [&](const TopoDS_Face& face) {
     BRepAdaptor_Surface S(face);
     const double u0 = S.FirstUParameter(), u1 = S.LastUParameter(), v0 = S.FirstVParameter(), v1 = S.LastVParameter();
     const double tol = BRep_Tool::Tolerance(face);
     BRepClass_FaceClassifier inside;
-    for (int a = 0; a < 5; ++a)
-      for (int b = 0; b < 5; ++b) {
-        const gp_Pnt2d uv(u0 + grid[a] * (u1 - u0), v0 + grid[b] * (v1 - v0));
+    for (double a : grid)
+      for (double b : grid) {
+        const gp_Pnt2d uv(u0 + a * (u1 - u0), v0 + b * (v1 - v0));
         inside.Perform(face, uv, tol);
         if (inside.State() != TopAbs_IN) continue;
         gp_Pnt p;
@@ -162,13 +163,19 @@ bool raysLeaveOutward(const TopoDS_Shell& shell, const std::vector<TopoDS_Face>&
           auto& I = intersectors[k];
           if (!I) I = std::make_unique<IntCurvesFace_Intersector>(boxes[k].first, Precision::Confusion());
           I->Perform(ray, 0.0, Precision::Infinite());
-          if (!I->IsDone()) return false;
+          if (!I->IsDone()) return 0;
           for (int h = 1; h <= I->NbPnt(); ++h)
-            if (I->WParameter(h) > 10 * tol) return false;  // met the shell again
+            if (I->WParameter(h) > 10 * tol) return 0;  // met the shell again
         }
-        if (++escaped == 3) return true;
-        a = b = 5;  // one ray per face: three faces agree
+        return 1;
       }
+    return -1;
+  };
+  int escaped = 0;  // one ray per face: three faces must agree
+  for (const TopoDS_Face& face : from) {
+    const int leaves = rayLeaves(face);
+    if (leaves == 0) return false;
+    if (leaves == 1 && ++escaped == 3) return true;
   }
   return false;
 }

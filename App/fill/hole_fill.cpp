@@ -59,7 +59,6 @@ std::string edgeList(const std::vector<int>& e) {
 
 int statusRank(FillStatus s) { return s == FillStatus::Ok ? 0 : s == FillStatus::ToleranceNotMet ? 1 : 2; }
 
-// The worst error of a fill's report relative to its tolerance, over what each edge was asked.
 // What loop edge i is judged against. With opt.modelAccuracy no stricter than the model itself is
 // there: G0 within the edge's own tolerance where that is the larger, G1 within the tolerance
 // beyond the angle at which the neighbour meets the edge's curve (its g1Floor). `relaxed`: the
@@ -325,14 +324,15 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       return sampledAt.emplace(density, std::move(sd)).first->second;
     };
 
-    // Parameterize and solve at one density's samples. Worker threads get no progress callback
-    // (it may be a Python callable, which only the calling thread may run).
-    auto solveWith = [&](ParamMethod m, const Sampled& sd, bool report) {
+    // Parameterize (unless `given` already is that parameterization) and solve at one density's
+    // samples. Worker threads get no progress callback (it may be a Python callable, which only
+    // the calling thread may run).
+    auto solveWith = [&](ParamMethod m, const Sampled& sd, bool report, const Parameterization* given) {
       FillAttempt a;
       a.method = m;
       const auto ta = Clock::now();
       try {
-        a.P = parameterize(hole, sd.unit, m, opt.parameterization);
+        a.P = given ? *given : parameterize(hole, sd.unit, m, opt.parameterization);
         a.method = a.P.chosen;
         a.parameterizeSeconds = since(ta);
         FillConstraints c;
@@ -384,9 +384,9 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     // Build and check one solved attempt: a complete result (r's hole, requests and warnings so
     // far, plus this attempt's face, report and status). The face leaves the edges again
     // (detachFace), so the next candidate is built and judged on the edges as the model had them;
-    // the one kept is put back on and sewn.
-    // Candidates are compared, and resampled, by the tiers as they are, so that a model's own
-    // inaccuracy never stops the search at a worse face; the one kept is then classified as asked.
+    // the one kept is put back on and sewn. Candidates are compared, and resampled, by the tiers
+    // as they are, so that a model's own inaccuracy never stops the search at a worse face; the
+    // one kept is then classified as asked.
     HoleFillOptions strict = opt;
     strict.modelAccuracy = false;
     auto judged = [&](const FillAttempt& a, const Sampled& sd, FaceBuildResult& built) {
@@ -409,6 +409,13 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       ri.refinements = vf.refinements;
       ri.samples = static_cast<int>(sd.samples.size());
       FillStage at = FillStage::Build;
+      auto fail = [&](const std::string& message) {
+        if (!built.face.IsNull()) detachFace(hole, built);
+        built = FaceBuildResult();
+        ri.status = FillStatus::Failed;
+        ri.failedStage = at;
+        ri.message = message;
+      };
       try {
         auto tb = Clock::now();
         built = buildTrimmedFace(hole, toOcct(surf), sd.samples, P.uv);
@@ -420,26 +427,23 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         detachFace(hole, built);
         r.timings.check += since(tb);
       } catch (const Error& e) {
-        if (!built.face.IsNull()) detachFace(hole, built);
-        built = FaceBuildResult();
-        ri.status = FillStatus::Failed;
-        ri.failedStage = at;
-        ri.message = e.what();
+        fail(e.what());
       } catch (const Standard_Failure& e) {
-        if (!built.face.IsNull()) detachFace(hole, built);
-        built = FaceBuildResult();
-        ri.status = FillStatus::Failed;
-        ri.failedStage = at;
-        ri.message = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+        fail(std::string("OpenCASCADE failed: ") + e.GetMessageString());
       }
       return ri;
     };
 
     std::vector<ParamMethod> methods{opt.method};
+    std::optional<Parameterization> picked;  // Auto's own parameterization: its first attempt's
     if (opt.method == ParamMethod::Auto && opt.fillByResult) {
       const Sampled& sd = sampled(1);
       stage = FillStage::Parameterize;
-      const ParamMethod pick = parameterize(hole, sd.unit, ParamMethod::Auto, opt.parameterization).chosen;
+      picked = parameterize(hole, sd.unit, ParamMethod::Auto, opt.parameterization);
+      // The note on why Auto picked it: the attempts' report line says what was tried instead.
+      auto& w = picked->warnings;
+      w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& x) { return x.rfind("auto: ", 0) == 0; }), w.end());
+      const ParamMethod pick = picked->chosen;
       methods = {pick, pick == ParamMethod::NearestPlane ? ParamMethod::MeanValue : ParamMethod::NearestPlane};
       if (opt.autoUvtran) methods.push_back(ParamMethod::Uvtran);
     }
@@ -464,7 +468,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
           break;
         }
         stage = FillStage::Parameterize;
-        FillAttempt a = solveWith(m, sd, mi == 0 && density == 1);
+        FillAttempt a = solveWith(m, sd, mi == 0 && density == 1, mi == 0 && density == 1 && picked ? &*picked : nullptr);
         if (mi > 0 && m == ParamMethod::Uvtran && a.ok && a.method != ParamMethod::Uvtran) break;  // not MVC again
         a.density = density;
         if (a.ok && a.vf.cancelled) { cancel = true; break; }

@@ -60,7 +60,6 @@ struct HoleFillOptions {
   std::function<bool(double)> progress;  // fraction in [0,1]; return false to cancel
 };
 
-
 enum class FillStatus { Ok, ToleranceNotMet, Failed, Cancelled };
 enum class FillStage { None, Detect, Sample, Parameterize, Solve, Build, Check };
 std::string toString(FillStatus s);

@@ -84,6 +84,13 @@ std::vector<Eigen::Vector2d> gridInside(const Polygon2& poly, const Eigen::Vecto
   return out;
 }
 
+// The grid points of the pcurve's bounding box that lie inside it.
+std::vector<Eigen::Vector2d> gridInsidePcurve(const Polygon2& poly, const std::vector<Eigen::Vector2d>& uv, int cells) {
+  Eigen::AlignedBox2d box;
+  for (const auto& q : uv) box.extend(q);
+  return gridInside(poly, box.min(), box.max(), cells);
+}
+
 void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const ParameterizationOptions& opt,
                Parameterization& P) {
   const int n = static_cast<int>(s.size());
@@ -93,14 +100,13 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
     if ((i == 0 || s[i].edge != s[i - 1].edge) && hole.edges[s[i].edge].cornerAtStart) corners.push_back(i);
   double L = 0;
   for (int i = 0; i < n; ++i) L += (s[(i + 1) % n].point - s[i].point).norm();
-  double R = 0;
   P.uv.assign(n, Eigen::Vector2d::Zero());
   if (static_cast<int>(corners.size()) < opt.minCorners) {
     // A smooth loop (or one with one or two corners) has no polygon to map to: it goes onto a
     // circle by arc length, the N-gon's limit, so no corner appears in the pcurve that the
     // boundary does not have.
     P.warnings.push_back("the loop has " + std::to_string(corners.size()) + " corners; MVC maps it onto a circle");
-    R = L / (2.0 * M_PI);
+    const double R = L / (2.0 * M_PI);
     const int first = corners.empty() ? 0 : corners[0];
     double acc = 0;
     for (int k = 0; k < n; ++k) {
@@ -128,10 +134,9 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
       const double w = 0.5 * (arc[0].back() + arc[2].back()), h = 0.5 * (arc[1].back() + arc[3].back());
       V = {Eigen::Vector2d(-w / 2, -h / 2), Eigen::Vector2d(w / 2, -h / 2), Eigen::Vector2d(w / 2, h / 2),
            Eigen::Vector2d(-w / 2, h / 2)};
-      R = 0.5 * std::max(w, h);
     } else {
       // The regular N-gon with the loop's perimeter, its first side along u.
-      R = L / (2.0 * N * std::sin(M_PI / N));
+      const double R = L / (2.0 * N * std::sin(M_PI / N));
       const double start = -M_PI / 2 - M_PI / N;
       for (int c = 0; c < N; ++c) V[c] = R * Eigen::Vector2d(std::cos(start + 2 * M_PI * c / N), std::sin(start + 2 * M_PI * c / N));
     }
@@ -149,9 +154,7 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
   // Interior reference points by mean value interpolation of the boundary.
   std::vector<int> at;
   const Polygon2 poly = pcurvePolygon(P.uv, at);
-  Eigen::AlignedBox2d box;
-  for (const auto& q : P.uv) box.extend(q);
-  for (const auto& x : gridInside(poly, box.min(), box.max(), opt.interiorReferenceGrid)) {
+  for (const auto& x : gridInsidePcurve(poly, P.uv, opt.interiorReferenceGrid)) {
     const Eigen::VectorXd w = meanValueCoordinates(poly, x);
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int k = 0; k < w.size(); ++k) p += w(k) * s[at[k]].point;
@@ -164,9 +167,7 @@ void meanValue(const Hole& hole, const std::vector<BoundarySample>& s, const Par
 void interiorReferences(const BSplineSurface& surf, const ParameterizationOptions& opt, Parameterization& P) {
   std::vector<int> at;
   const Polygon2 poly = pcurvePolygon(P.uv, at);
-  Eigen::AlignedBox2d box;
-  for (const auto& q : P.uv) box.extend(q);
-  for (const auto& x : gridInside(poly, box.min(), box.max(), opt.interiorReferenceGrid)) {
+  for (const auto& x : gridInsidePcurve(poly, P.uv, opt.interiorReferenceGrid)) {
     P.interiorUV.push_back(x);
     P.interiorXYZ.push_back(surf.point(x.x(), x.y()));
   }
