@@ -657,7 +657,7 @@ int main(int argc, char** argv) {
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());
   } catch (const Standard_Failure& e) {
-    std::fprintf(stderr, "holefill: OpenCASCADE failed: %s\n", e.GetMessageString());
+    std::fprintf(stderr, "holefill: %s\n", occtFailure(e).c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());
   }

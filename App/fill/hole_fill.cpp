@@ -373,7 +373,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       } catch (const Error& e) {
         a.error = e.what();
       } catch (const Standard_Failure& e) {
-        a.error = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+        a.error = occtFailure(e);
       }
       a.seconds = since(ta);
       r.timings.parameterize += a.parameterizeSeconds;
@@ -429,7 +429,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       } catch (const Error& e) {
         fail(e.what());
       } catch (const Standard_Failure& e) {
-        fail(std::string("OpenCASCADE failed: ") + e.GetMessageString());
+        fail(occtFailure(e));
       }
       return ri;
     };
@@ -534,7 +534,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
   } catch (const Standard_Failure& e) {
     r.status = FillStatus::Failed;
     r.failedStage = stage;
-    r.message = std::string("OpenCASCADE failed: ") + e.GetMessageString();
+    r.message = occtFailure(e);
   } catch (const std::exception& e) {
     r.status = FillStatus::Failed;
     r.failedStage = stage;

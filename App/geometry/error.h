@@ -8,12 +8,19 @@
 #include <stdexcept>
 #include <string>
 
+class Standard_Failure;
+
 namespace holefill {
 
 class Error : public std::runtime_error {
 public:
   explicit Error(const std::string& what) : std::runtime_error(what) {}
 };
+
+// One line for an OCCT exception caught at a door or a stage boundary: "OpenCASCADE failed: "
+// and its message, or its exception type where OCCT gave none (many raise with an empty one,
+// which left "OpenCASCADE failed:" and nothing to act on).
+std::string occtFailure(const Standard_Failure& e);
 
 [[noreturn]] void throwCheckFailed(const char* cond, const std::string& msg, const char* file, int line);
 

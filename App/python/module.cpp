@@ -51,7 +51,7 @@ auto guarded(F&& f) -> decltype(f()) {
   try {
     return f();
   } catch (const Standard_Failure& e) {
-    throw Error(std::string("OpenCASCADE failed: ") + e.GetMessageString());
+    throw Error(occtFailure(e));
   }
 }
 
@@ -172,7 +172,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
     } catch (const Error& e) {
       exc(e.what());
     } catch (const Standard_Failure& e) {
-      exc((std::string("OpenCASCADE failed: ") + e.GetMessageString()).c_str());
+      exc(occtFailure(e).c_str());
     }
   });
   m.def("findHoles", [](const std::string& brep, bool includeOuter, double cornerAngleDeg) {
