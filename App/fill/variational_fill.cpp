@@ -61,63 +61,104 @@ struct Row {
   int sample;       // -1 for reference rows
 };
 
+// The unknowns in the order the factorization eliminates them: pole by pole with the shorter side
+// of the grid running fastest, a pole's three coordinates together. A bicubic pole couples only to
+// poles at most P rows and columns away, so the matrix is then a band about 3(P·min(nu,nv)+P)
+// wide, which a simplicial factorization handles with no wasted work. Measured on corpus fills
+// (Eigen's SimplicialLDLT, analysis and factorization): 13x10 poles 0.7 ms against 4.8 ms with
+// Eigen's default scalar AMD ordering, 23x15 5.7 against 14.7, 21x57 36 against 92, 57x41 234
+// against 372 ms. Nested dissection of the pole grid (separators P poles wide) was tried and lost
+// to the band up to the 2,500-pole limit.
+Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> bandOrder(int nu, int nv) {
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order(3 * nu * nv);
+  for (int iu = 0; iu < nu; ++iu)
+    for (int iv = 0; iv < nv; ++iv) {
+      const int pole = iu * nv + iv, place = nu <= nv ? iv * nu + iu : pole;
+      for (int c = 0; c < 3; ++c) order.indices()(3 * pole + c) = 3 * place + c;
+    }
+  return order;
+}
+
 struct System {
   int nu, nv;
   std::vector<Row> rows;
-  Eigen::SparseMatrix<double> H;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::SparseMatrix<double> H;  // lower triangle, unknowns in elimination order (bandOrder)
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;  // unknown -> its place in H
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;
+  Eigen::VectorXd solve(const Eigen::VectorXd& g) const { return order.transpose() * ldlt.solve(order * g); }
 };
 
 int poleIndex(int nv, int su, int sv, int k) { return (su - P + k / (P + 1)) * nv + (sv - P + k % (P + 1)); }
 
+// The normal equations' lower triangle, one 3x3 block per pair of poles whose supports overlap
+// (at most P apart in u and in v), summed in place and written column by column in order, never
+// through triplets or per-span dense blocks (their memory, not their arithmetic, was the cost).
+// A row along a coordinate axis (G0, tangent guide, reference) touches one coordinate; only rows
+// along other directions (G1, G2) couple coordinates, and only structurally non-zero entries are
+// kept: the interior couples no two coordinates, and the factorization's fill-in depends on that.
 void assemble(System& sys, const Eigen::SparseMatrix<double>& A) {
-  const int n = sys.nu * sys.nv;
-  // Rows of one knot span touch the same 16 poles: sum them into one dense 48x48 block per
-  // span first, so the sparse matrix sees one triplet per block entry, not per row.
-  using Block = Eigen::Matrix<double, 3 * M, 3 * M>;
-  std::map<std::pair<int, int>, Block> blocks;
+  const int nu = sys.nu, nv = sys.nv, n = nu * nv;
+  constexpr int W = 2 * P + 1;                // neighbour offsets per direction
+  constexpr int F = P * W + P + 1;            // forward neighbours (ia >= ib) of a pole
+  auto slotOf = [](int du, int dv) { return du == 0 ? dv : P + 1 + (du - 1) * W + (dv + P); };
+  auto slot = [&](int ia, int ib) { return slotOf(ia / nv - ib / nv, ia % nv - ib % nv); };
+  std::vector<Eigen::Matrix3d> band(static_cast<size_t>(n) * F, Eigen::Matrix3d::Zero());
+  auto at = [&](int ia, int ib) -> Eigen::Matrix3d& { return band[static_cast<size_t>(ib) * F + slot(ia, ib)]; };
+
+  // Within one span's 4x4 poles the pair (a, b) with a's pole after b's always has the same slot.
+  int pairSlot[M][M];
+  for (int a = 0; a < M; ++a)
+    for (int b = 0; b < M; ++b) {
+      const int du = a / (P + 1) - b / (P + 1), dv = a % (P + 1) - b % (P + 1);
+      pairSlot[a][b] = (du > 0 || (du == 0 && dv >= 0)) ? slotOf(du, dv) : -1;
+    }
   for (const Row& r : sys.rows) {
-    auto it = blocks.find({r.su, r.sv});
-    if (it == blocks.end()) it = blocks.emplace(std::make_pair(r.su, r.sv), Block::Zero()).first;
-    Block& B = it->second;
-    const Eigen::Matrix<double, M, M> C = r.weight * r.coef * r.coef.transpose();
-    int axis = -1;  // G0 rows act on one coordinate: only that diagonal of each 3x3 block
+    int axis = -1;
     for (int d = 0; d < 3; ++d)
       if (r.dir(d) == 1.0 && r.dir((d + 1) % 3) == 0.0 && r.dir((d + 2) % 3) == 0.0) axis = d;
-    if (axis >= 0) {
-      for (int a = 0; a < M; ++a)
-        for (int b = 0; b < M; ++b) B(3 * a + axis, 3 * b + axis) += C(a, b);
-    } else {
-      const Eigen::Matrix3d D = r.dir * r.dir.transpose();
-      for (int a = 0; a < M; ++a)
-        for (int b = 0; b < M; ++b) B.block<3, 3>(3 * a, 3 * b) += C(a, b) * D;
-    }
-  }
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(A.nonZeros() * 3 + blocks.size() * 9 * M * M);
-  for (int k = 0; k < A.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
-      for (int c = 0; c < 3; ++c) trip.emplace_back(3 * it.row() + c, 3 * it.col() + c, it.value());
-  for (const auto& [span, B] : blocks)
-    for (int a = 0; a < M; ++a) {
-      const int ia = poleIndex(sys.nv, span.first, span.second, a);
-      for (int b = 0; b < M; ++b) {
-        const int ib = poleIndex(sys.nv, span.first, span.second, b);
-        for (int c = 0; c < 3; ++c)
-          for (int d = 0; d < 3; ++d) {
-            const double v = B(3 * a + c, 3 * b + d);
-            if (v != 0.0) trip.emplace_back(3 * ia + c, 3 * ib + d, v);
-          }
+    const Eigen::Matrix3d D = r.weight * r.dir * r.dir.transpose();
+    const int base = poleIndex(nv, r.su, r.sv, 0);
+    for (int b = 0; b < M; ++b) {
+      const int ib = base + (b / (P + 1)) * nv + b % (P + 1);
+      Eigen::Matrix3d* column = &band[static_cast<size_t>(ib) * F];
+      for (int a = 0; a < M; ++a) {
+        if (pairSlot[a][b] < 0) continue;
+        const double c = r.coef(a) * r.coef(b);
+        if (axis >= 0) column[pairSlot[a][b]](axis, axis) += r.weight * c;
+        else column[pairSlot[a][b]] += c * D;
       }
     }
+  }
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (it.row() >= j) at(static_cast<int>(it.row()), j).diagonal().array() += it.value();
+
   sys.H.resize(3 * n, 3 * n);
-  sys.H.setFromTriplets(trip.begin(), trip.end());
+  sys.H.reserve(static_cast<Eigen::Index>(n) * 3 * 2 * P * W);
+  for (int ib = 0; ib < n; ++ib)
+    for (int d = 0; d < 3; ++d) {
+      sys.H.startVec(3 * ib + d);
+      for (int du = 0; du <= P && ib / nv + du < nu; ++du)
+        for (int dv = (du == 0 ? 0 : -P); dv <= P; ++dv) {
+          const int iv = ib % nv + dv;
+          if (iv < 0 || iv >= nv) continue;
+          const int ia = ib + du * nv + dv;
+          const Eigen::Matrix3d& E = band[static_cast<size_t>(ib) * F + slot(ia, ib)];
+          for (int c = (ia == ib ? d : 0); c < 3; ++c)
+            if (E(c, d) != 0.0) sys.H.insertBack(3 * ia + c, 3 * ib + d) = E(c, d);
+        }
+    }
+  sys.H.finalize();
   const auto t0 = std::chrono::steady_clock::now();
-  sys.ldlt.compute(sys.H);
+  sys.order = bandOrder(nu, nv);
+  Eigen::SparseMatrix<double> ordered(3 * n, 3 * n);
+  ordered.selfadjointView<Eigen::Lower>() = sys.H.selfadjointView<Eigen::Lower>().twistedBy(sys.order);
+  sys.H = std::move(ordered);
+  sys.ldlt.compute(sys.H);  // reads the lower triangle
   if (std::getenv("HOLEFILL_DEBUG"))
-    std::fprintf(stderr, "  factor %.4fs (%d unknowns, %ld nonzeros, %zu blocks)\n",
+    std::fprintf(stderr, "  factor %.4fs (%d unknowns, %ld nonzeros in the lower triangle, %zu rows)\n",
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 3 * n,
-                 static_cast<long>(sys.H.nonZeros()), blocks.size());
+                 static_cast<long>(sys.H.nonZeros()), sys.rows.size());
   if (sys.ldlt.info() != Eigen::Success)
     throw Error("the fill's normal equations are singular: the boundary constraints do not determine the surface");
 }
@@ -325,7 +366,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       Eigen::VectorXd levelX;
       std::vector<double> history;
       for (int it = 0; it <= o.multiplierIterations; ++it, ++iterations) {
-        x = sys.ldlt.solve(rhs(sys, targets));
+        x = sys.solve(rhs(sys, targets));
         const Errors e = measure(basis, x, sys.nv, c, o);
         if (it == 0 || better(e, levelBest, o)) { levelBest = e; levelX = x; }
         // Keep iterating past the tolerance: the multiplier rounds are cheap and the margin

@@ -6,7 +6,8 @@
 // at the boundary samples (uv_k = pcurve samples, B_k, n_k, κ_k from the support faces).
 //
 // Solver: the constraint terms are imposed by an augmented Lagrangian on the same
-// factorization (sparse LDLT of the normal equations; targets are shifted by the
+// factorization (sparse LDLT of the normal equations, the poles eliminated in a band along the
+// grid's shorter side; targets are shifted by the
 // residual each round), so tolerances far below what a pure penalty reaches are met
 // without ill-conditioned weights. Where samples still violate the tolerances, knots
 // are inserted at the middle of the u- and v-spans holding them (only spans that hold
