@@ -36,6 +36,9 @@ struct BoundarySamplingOptions {
   int minSamplesPerEdge = 50;    // DESIGN.md: at least 50 samples per edge
   int maxSamplesPerEdge = 400;   // cap for long, wiggly edges
   double angularStep = 0.02;     // radians of tangent turning per sample
+  bool operator==(const BoundarySamplingOptions& o) const {  // every field
+    return minSamplesPerEdge == o.minSamplesPerEdge && maxSamplesPerEdge == o.maxSamplesPerEdge && angularStep == o.angularStep;
+  }
 };
 
 std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySamplingOptions& options = {});

@@ -179,46 +179,84 @@ void classify(HoleFillResult& r, const HoleFillOptions& opt) {
 
 }  // namespace
 
-HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& opt) {
-  const HoleDetectionResult det = detectHoles(model, opt.detection);
-  if (det.holes.empty()) throw Error("the shape has no holes (no closed free-boundary loop besides outer sheet boundaries)");
-  if (holeIndex < 0 || holeIndex >= static_cast<int>(det.holes.size()))
-    throw Error("hole " + std::to_string(holeIndex + 1) + " does not exist: the shape has " +
-                std::to_string(det.holes.size()) + " hole(s)");
-  return fillHole(model, det.holes[holeIndex].edgeIndices(), opt);
-}
-
-HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& opt) {
+PreparedHole::PreparedHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleDetectionOptions& d)
+    : model_(model) {
   if (model.IsNull()) throw Error("the shape is empty: nothing to fill");
   const auto t0 = Clock::now();
-  // The new pcurves and tolerances go onto edges the user's shape does not own: a deep copy of
-  // the model when the face is sewn into it, else copies of the hole's edges alone (one copy,
+  detection_ = detectHoles(model, d);
+  hole_ = holeContainingEdges(detection_, holeEdges);
+  detectSeconds_ = since(t0);
+}
+
+PreparedHole::PreparedHole(const TopoDS_Shape& model, int holeIndex, const HoleDetectionOptions& d) : model_(model) {
+  if (model.IsNull()) throw Error("the shape is empty: nothing to fill");
+  const auto t0 = Clock::now();
+  detection_ = detectHoles(model, d);
+  if (detection_.holes.empty())
+    throw Error("the shape has no holes (no closed free-boundary loop besides outer sheet boundaries)");
+  if (holeIndex < 0 || holeIndex >= static_cast<int>(detection_.holes.size()))
+    throw Error("hole " + std::to_string(holeIndex + 1) + " does not exist: the shape has " +
+                std::to_string(detection_.holes.size()) + " hole(s)");
+  hole_ = detection_.holes[holeIndex];
+  detectSeconds_ = since(t0);
+}
+
+HoleFillResult PreparedHole::fill(const HoleFillOptions& opt) {
+  if (consumed_)
+    throw Error("the prepared model already holds a fill made in place (copyModel false): prepare the hole again");
+  const auto t0 = Clock::now();
+  // The new pcurves and tolerances go onto edges the prepared model does not own: a deep copy of
+  // the model when the face is sewn into it, else copies of the hole's supports alone (one copy,
   // so consecutive edges keep sharing their vertices), which costs nothing on large models.
-  const TopoDS_Shape work = opt.sew && opt.copyModel ? BRepBuilderAPI_Copy(model, Standard_True, Standard_False).Shape() : model;
-  const HoleDetectionResult det = detectHoles(work, opt.detection);
-  Hole hole = holeContainingEdges(det, holeEdges);
-  if (!opt.sew) {
+  TopoDS_Shape work = model_;
+  Hole hole = hole_;
+  auto ontoCopy = [&hole](BRepBuilderAPI_Copy&& copier) {
+    for (auto& he : hole.edges) {
+      he.edge = TopoDS::Edge(copier.ModifiedShape(he.edge).Oriented(he.edge.Orientation()));
+      he.support = TopoDS::Face(copier.ModifiedShape(he.support).Oriented(he.support.Orientation()));
+    }
+  };
+  if (opt.sew && opt.copyModel) {
+    BRepBuilderAPI_Copy copier(model_, Standard_True, Standard_False);
+    work = copier.Shape();
+    ontoCopy(std::move(copier));
+  } else if (!opt.sew) {
     // Copy the support faces (which carry the edges' pcurves), sharing their geometry.
     BRep_Builder B;
     TopoDS_Compound supports;
     B.MakeCompound(supports);
     TopTools_IndexedMapOfShape seen;
+    std::vector<std::pair<TopoDS_Shape, bool>> freeBefore;  // Add marks a face as held: not the user's
     for (const auto& he : hole.edges)
-      if (seen.Add(he.support) == seen.Extent()) B.Add(supports, he.support);
-    BRepBuilderAPI_Copy copier(supports, Standard_False, Standard_False);
-    for (auto& he : hole.edges) {
-      he.edge = TopoDS::Edge(copier.ModifiedShape(he.edge).Oriented(he.edge.Orientation()));
-      he.support = TopoDS::Face(copier.ModifiedShape(he.support).Oriented(he.support.Orientation()));
-    }
+      if (!seen.Contains(he.support)) {
+        seen.Add(he.support);
+        freeBefore.emplace_back(he.support, he.support.Free());
+        B.Add(supports, he.support);
+      }
+    ontoCopy(BRepBuilderAPI_Copy(supports, Standard_False, Standard_False));
+    for (auto& [face, wasFree] : freeBefore) face.Free(wasFree);
+  } else {
+    consumed_ = true;
   }
-  HoleFillResult r = fillHoleOf(work, hole, opt, since(t0));
-  r.warnings.insert(r.warnings.begin(), det.warnings.begin(), det.warnings.end());
-  for (size_t i = 0; i < det.holes.size(); ++i)
-    if (det.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
+  // Detection is paid by the first fill only; later ones reuse it.
+  HoleFillResult r = fillHoleOf(work, hole, opt, detectSeconds_ + since(t0), &cache_);
+  detectSeconds_ = 0;
+  r.warnings.insert(r.warnings.begin(), detection_.warnings.begin(), detection_.warnings.end());
+  for (size_t i = 0; i < detection_.holes.size(); ++i)
+    if (detection_.holes[i].edgeIndices() == r.hole.edgeIndices()) r.holeIndex = static_cast<int>(i);
   return r;
 }
 
-HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const HoleFillOptions& opt, double elapsed) {
+HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& opt) {
+  return PreparedHole(model, holeIndex, opt.detection).fill(opt);
+}
+
+HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& opt) {
+  return PreparedHole(model, holeEdges, opt.detection).fill(opt);
+}
+
+HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const HoleFillOptions& opt, double elapsed,
+                          FillCache* cache) {
   if (work.IsNull()) throw Error("the shape is empty: nothing to fill");
   HoleFillResult r;
   r.requested = toString(opt.continuity);
@@ -292,14 +330,17 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     so.g1Tolerance = std::min(so.g1Tolerance, opt.solverMargin * opt.angularTolerance);
     so.g2Tolerance = std::min(so.g2Tolerance, opt.solverMargin * opt.curvatureTolerance);
 
-    struct Sampled {
-      std::vector<BoundarySample> samples, unit;  // model units; normalized (centre at 0, scale 1)
-      Eigen::Vector3d centre;
-    };
-    std::map<int, Sampled> sampledAt;  // by density
+    FillCache own;
+    FillCache& fc = cache ? *cache : own;
+    if (!(fc.sampling == opt.sampling) || !(fc.parameterization == opt.parameterization)) {
+      fc = FillCache();
+      fc.sampling = opt.sampling;
+      fc.parameterization = opt.parameterization;
+    }
+    using Sampled = SampledBoundary;
     auto sampled = [&](int density) -> const Sampled& {
-      auto it = sampledAt.find(density);
-      if (it != sampledAt.end()) return it->second;
+      auto it = fc.sampled.find(density);
+      if (it != fc.sampled.end()) return it->second;
       stage = FillStage::Sample;
       const auto ts = Clock::now();
       BoundarySamplingOptions sampling = opt.sampling;
@@ -321,18 +362,31 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         x.weight /= scale;
       }
       r.timings.sample += since(ts);
-      return sampledAt.emplace(density, std::move(sd)).first->second;
+      ++fc.samplings;
+      return fc.sampled.emplace(density, std::move(sd)).first->second;
+    };
+    // A method's parameterization at one density, computed once per cache.
+    auto parameterized = [&](ParamMethod m, int density) -> Parameterization {
+      const auto key = std::make_pair(static_cast<int>(m), density);
+      auto it = fc.parameterized.find(key);
+      if (it != fc.parameterized.end()) return it->second;
+      const Sampled& sd = sampled(density);
+      stage = FillStage::Parameterize;
+      Parameterization P = parameterize(hole, sd.unit, m, opt.parameterization);
+      ++fc.parameterizations;
+      return fc.parameterized.emplace(key, std::move(P)).first->second;
     };
 
     // Parameterize (unless `given` already is that parameterization) and solve at one density's
     // samples. Worker threads get no progress callback (it may be a Python callable, which only
     // the calling thread may run).
-    auto solveWith = [&](ParamMethod m, const Sampled& sd, bool report, const Parameterization* given) {
+    auto solveWith = [&](ParamMethod m, int density, bool report, const Parameterization* given) {
+      const Sampled& sd = sampled(density);
       FillAttempt a;
       a.method = m;
       const auto ta = Clock::now();
       try {
-        a.P = given ? *given : parameterize(hole, sd.unit, m, opt.parameterization);
+        a.P = given ? *given : parameterized(m, density);
         a.method = a.P.chosen;
         a.parameterizeSeconds = since(ta);
         FillConstraints c;
@@ -437,9 +491,8 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     std::vector<ParamMethod> methods{opt.method};
     std::optional<Parameterization> picked;  // Auto's own parameterization: its first attempt's
     if (opt.method == ParamMethod::Auto && opt.fillByResult) {
-      const Sampled& sd = sampled(1);
       stage = FillStage::Parameterize;
-      picked = parameterize(hole, sd.unit, ParamMethod::Auto, opt.parameterization);
+      picked = parameterized(ParamMethod::Auto, 1);
       // The note on why Auto picked it: the attempts' report line says what was tried instead.
       auto& w = picked->warnings;
       w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& x) { return x.rfind("auto: ", 0) == 0; }), w.end());
@@ -468,7 +521,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
           break;
         }
         stage = FillStage::Parameterize;
-        FillAttempt a = solveWith(m, sd, mi == 0 && density == 1, mi == 0 && density == 1 && picked ? &*picked : nullptr);
+        FillAttempt a = solveWith(m, density, mi == 0 && density == 1, mi == 0 && density == 1 && picked ? &*picked : nullptr);
         if (mi > 0 && m == ParamMethod::Uvtran && a.ok && a.method != ParamMethod::Uvtran) break;  // not MVC again
         a.density = density;
         if (a.ok && a.vf.cancelled) { cancel = true; break; }

@@ -117,6 +117,24 @@ struct HoleFillResult {
   BSplineSurface projectionSurface; // UVTran's predicted projection surface (model units), when it was used
 };
 
+// The boundary of a hole sampled at one density: in model units and normalized (centre at 0,
+// scale 1: the coordinates the fill is solved in).
+struct SampledBoundary {
+  std::vector<BoundarySample> samples, unit;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+};
+
+// What fills of one hole share: its boundary samples per density and its parameterizations per
+// method and density, each computed on first use. Valid for one set of sampling and
+// parameterization options (a fill with others starts it afresh).
+struct FillCache {
+  std::map<int, SampledBoundary> sampled;                          // by density
+  std::map<std::pair<int, int>, Parameterization> parameterized;  // by (method, density); successes only
+  BoundarySamplingOptions sampling;
+  ParameterizationOptions parameterization;
+  int samplings = 0, parameterizations = 0;  // computed so far (not taken from the cache)
+};
+
 // The hole is the loop holding all the given 1-based edge indices (FreeCAD "Edge<k>").
 HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& options = {});
 // The hole by 0-based index in detectHoles(model).holes.
@@ -125,8 +143,36 @@ HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFill
 // to `work`. With options.sew the new pcurves go onto those edges and the face is sewn into
 // `work`: it must be the caller's private copy. `elapsed` (seconds already spent finding the
 // hole) is added to the detect timing. holeIndex stays -1.
+// `cache`: samples and parameterizations from earlier fills of this hole (PreparedHole); none: its own.
 HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& hole, const HoleFillOptions& options = {},
-                          double elapsed = 0.0);
+                          double elapsed = 0.0, FillCache* cache = nullptr);
+
+// A hole found once and filled as often as asked (issue 20, the precompute/solve split): the model
+// is read and its hole detected once; the boundary samples and the parameterizations (UVTran's
+// network, MVC's interior references) are kept from the first fill that needs them. A Preview
+// that changes only the method, continuity, tolerances, per-edge requests or output reuses all
+// of it and pays for the solve, build and check alone. The factorization is not kept: the
+// continuity rows, per-edge orders and weights are what such a change changes, and the knot
+// refinement follows the tolerances. Each fill works on its own copy of the hole's edges (of the
+// whole model when sewn), so the prepared model is never modified and may be filled again; with
+// options.copyModel false the model itself receives the face, and the hole can be filled once.
+class PreparedHole {
+ public:
+  PreparedHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleDetectionOptions& detection = {});
+  PreparedHole(const TopoDS_Shape& model, int holeIndex, const HoleDetectionOptions& detection = {});
+  HoleFillResult fill(const HoleFillOptions& options);  // options.detection: the constructor's applies
+  const Hole& hole() const { return hole_; }
+  const FillCache& cache() const { return cache_; }
+  double detectSeconds() const { return detectSeconds_; }
+
+ private:
+  TopoDS_Shape model_;
+  HoleDetectionResult detection_;
+  Hole hole_;
+  FillCache cache_;
+  double detectSeconds_ = 0;
+  bool consumed_ = false;  // filled in place (copyModel false)
+};
 
 // UVTran's projection surface for the hole holding the given edges, in model units (what the
 // "uvtran" method projects the boundary onto), for display. Throws when it cannot be predicted.

@@ -42,6 +42,10 @@ struct ParameterizationOptions {
   std::string uvtranWeights;      // empty: the shipped Resources/models/uvtran.pt
   double uvtranMaxDistance = 0.2; // UVTran surface farther than this from the boundary (fraction of the
                                   // boundary's box diagonal) is rejected as a wrong prediction
+  bool operator==(const ParameterizationOptions& o) const {  // every field
+    return margin == o.margin && minCorners == o.minCorners && interiorReferenceGrid == o.interiorReferenceGrid &&
+           autoPlaneCos == o.autoPlaneCos && uvtranWeights == o.uvtranWeights && uvtranMaxDistance == o.uvtranMaxDistance;
+  }
 };
 
 struct Parameterization {

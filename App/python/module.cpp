@@ -10,6 +10,7 @@
 #include <array>
 #include <chrono>
 #include <map>
+#include <memory>
 #include <tuple>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -72,21 +73,37 @@ HoleFillOptions fillOptions(const std::string& method, const std::string& contin
   return o;
 }
 
-py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
-               const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
-               int maxControlPoints, const std::function<bool(double)>& progress, bool sew,
-               const std::string& edgeContinuity, bool detectCreases, bool modelAccuracy) {
+// (BREP of the face, BREP of the sewn model, report JSON).
+py::tuple fillTuple(const HoleFillResult& r) {
+  const std::string face = r.face.IsNull() ? "" : shapeToBrepString(r.face);
+  const std::string shape = r.shape.IsNull() ? "" : shapeToBrepString(r.shape);
+  return py::make_tuple(py::bytes(face), py::bytes(shape), toJson(r));
+}
+
+// One prepared hole's fill, as HoleFillApp.fillHole and PreparedHole.fill take it.
+py::tuple fillPrepared(PreparedHole& hole, const std::string& method, const std::string& continuity, double tolerance,
+                       double angularTolerance, double curvatureTolerance, int maxControlPoints,
+                       const std::function<bool(double)>& progress, bool sew, const std::string& edgeContinuity,
+                       bool detectCreases, bool modelAccuracy) {
   return guarded([&] {
-    const TopoDS_Shape model = shapeFromBrepString(brep);
     HoleFillOptions o = fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
                                     maxControlPoints, progress, edgeContinuity, detectCreases);
     o.sew = sew;
     o.modelAccuracy = modelAccuracy;
-    const HoleFillResult r = fillHole(model, edges, o);
-    const std::string face = r.face.IsNull() ? "" : shapeToBrepString(r.face);
-    const std::string shape = r.shape.IsNull() ? "" : shapeToBrepString(r.shape);
-    return py::make_tuple(py::bytes(face), py::bytes(shape), toJson(r));
+    return fillTuple(hole.fill(o));
   });
+}
+
+std::unique_ptr<PreparedHole> prepare(const std::string& brep, const std::vector<int>& edges) {
+  return guarded([&] { return std::make_unique<PreparedHole>(shapeFromBrepString(brep), edges); });
+}
+
+py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
+               const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
+               int maxControlPoints, const std::function<bool(double)>& progress, bool sew,
+               const std::string& edgeContinuity, bool detectCreases, bool modelAccuracy) {
+  return fillPrepared(*prepare(brep, edges), method, continuity, tolerance, angularTolerance, curvatureTolerance,
+                      maxControlPoints, progress, sew, edgeContinuity, detectCreases, modelAccuracy);
 }
 
 // (BREP of the two faces as a compound, BREP of the model with both, report JSON).
@@ -189,6 +206,18 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
         py::arg("edgeContinuity") = "", py::arg("detectCreases") = true, py::arg("modelAccuracy") = true,
         "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
+  py::class_<PreparedHole>(m, "PreparedHole",
+                           "A hole read and found once, filled as often as asked: its boundary samples and "
+                           "parameterizations are kept between fills (a Preview that changes only the method, "
+                           "continuity, tolerances or edge requests pays for the solve alone).")
+      .def(py::init(&prepare), py::arg("brep"), py::arg("edges"))
+      .def("fill", &fillPrepared, py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,
+           py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,
+           py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true, py::arg("edgeContinuity") = "",
+           py::arg("detectCreases") = true, py::arg("modelAccuracy") = true,
+           "Fill it: (face BREP, sewn model BREP, report JSON), as fillHole.")
+      .def("computed", [](const PreparedHole& h) { return py::make_tuple(h.cache().samplings, h.cache().parameterizations); },
+           "(boundary samplings, parameterizations) computed so far; the rest came from the kept ones.");
   m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"),
         py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,
         py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,

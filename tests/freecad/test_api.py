@@ -175,6 +175,48 @@ def test_make_fill_is_parametric_and_leaves_source_alone():
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_prepared_hole_is_filled_again_from_what_it_kept():
+    shape = load("panel_6_sided")
+    before = shape.exportBrepToString()
+    prepared = HoleFill.prepareHole(shape, 1)
+    face1, rep1 = prepared.fill(method="mvc", continuity="G1")
+    computed = prepared.computed()
+    assert computed[0] >= 1 and computed[1] >= 1, computed
+    face0, rep0 = prepared.fill(method="mvc", continuity="G0")
+    face2, sewn, rep2 = prepared.fill(method="mvc", continuity="G1", sewn=True)
+    assert prepared.computed() == computed, (prepared.computed(), computed)
+    assert rep1["status"] == rep2["status"] == "ok" and rep0["requested"] == "G0", (rep1["message"], rep0["requested"])
+    assert sewn.isValid() and len(sewn.Faces) == len(shape.Faces) + 1
+    # The same face as a fresh fillHole, and the shape untouched.
+    direct, rep = HoleFill.fillHole(shape, 1, method="mvc", continuity="G1")
+    poles = [p for row in face2.Surface.getPoles() for p in row]
+    ref = [p for row in direct.Surface.getPoles() for p in row]
+    assert len(poles) == len(ref) and max((a - b).Length for a, b in zip(poles, ref)) < 1e-9
+    assert shape.exportBrepToString() == before
+    fcharness.expect_error(lambda: prepared.fill(method="nope"), "unknown method")
+
+
+def test_make_fill_preview_reuses_the_prepared_hole():
+    doc = FreeCAD.newDocument("HoleFillPrepared")
+    src = doc.addObject("Part::Feature", "Panel")
+    src.Shape = load("panel_6_sided")
+    doc.recompute()
+    fill = HoleFill.makeFill(src, [HoleFill.findHoles(src.Shape)[0].edges[0]], continuity="G1")
+    prepared = fill.Proxy._prepared[2]
+    computed = prepared.computed()
+    for c in ("G0", "G2", "G1"):
+        fill.Continuity = c
+        doc.recompute()
+        assert fill.isValid() and fill.Status in ("ok", "tolerance_not_met"), (c, fill.Status)
+    assert fill.Proxy._prepared[2] is prepared and prepared.computed() == computed
+    # A changed source is prepared afresh.
+    src.Placement.Base = FreeCAD.Vector(0, 0, 5)
+    doc.recompute()
+    assert fill.isValid() and fill.Proxy._prepared[2] is not prepared
+    assert fill.Shape.BoundBox.Center.z > 2
+    FreeCAD.closeDocument(doc.Name)
+
+
 def test_failed_make_fill_leaves_document_as_it_was():
     doc = FreeCAD.newDocument("HoleFillFail")
     src = doc.addObject("Part::Feature", "Box")

@@ -25,7 +25,7 @@ HoleFillError = HoleFillApp.HoleFillError
 METHODS = ("auto", "np", "mvc", "uvtran")
 CONTINUITIES = ("G0", "G1", "G2")
 
-__all__ = ["findHoles", "fillHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+__all__ = ["findHoles", "fillHole", "prepareHole", "PreparedHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
            "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
            "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints", "fitLabeled"]
@@ -106,6 +106,50 @@ def _edgeIndices(shape, hole):
     return out
 
 
+class PreparedHole:
+    """A hole of a shape, read and found once and filled as often as asked (prepareHole): its
+    boundary samples and parameterizations (UVTran's network, MVC's interior references) are kept
+    between fills, so a fill that changes only the method, continuity, tolerances or per-edge
+    requests pays for the solve, build and check alone. The shape is never modified."""
+
+    def __init__(self, shape, hole=1):
+        self.edges = _edgeIndices(shape, hole)
+        self._prepared = HoleFillApp.PreparedHole(_brep(shape), self.edges)
+
+    def computed(self):
+        """(boundary samplings, parameterizations) computed so far; the rest were reused."""
+        return self._prepared.computed()
+
+    def fill(self, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3, curvatureTolerance=0.1,
+             maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None, detectCreases=True,
+             modelAccuracy=True):
+        """As fillHole, on this hole."""
+        if method not in METHODS + ("support",):
+            raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
+        if continuity not in CONTINUITIES:
+            raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
+        spec = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
+                        for e, c in (edgeContinuity or {}).items())
+        face, model, rep = self._prepared.fill(method, continuity, float(tolerance), float(angularTolerance),
+                                               float(curvatureTolerance), int(maxControlPoints), progress,
+                                               bool(sewn), spec, bool(detectCreases), bool(modelAccuracy))
+        report = json.loads(rep)
+        if report["status"] in ("failed", "cancelled"):
+            where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
+            raise HoleFillError("fill %s at stage '%s': %s%s" % (report["status"], report["failed_stage"],
+                                                                 report["message"], " (edges %s)" % where if where else ""))
+        f = _shape(face).Faces[0]
+        if sewn:
+            return f, _shape(model), report
+        return f, report
+
+
+def prepareHole(shape, hole=1):
+    """A PreparedHole: `hole` of `shape` (as in fillHole) read and found once, for several fills
+    (prepared.fill(...) takes fillHole's options), e.g. a Preview that tries continuities."""
+    return PreparedHole(shape, hole)
+
+
 def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
              curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None,
              detectCreases=True, modelAccuracy=True):
@@ -128,25 +172,9 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
     The report says what was achieved; a fill that misses the request is returned with
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
-    if method not in METHODS + ("support",):
-        raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
-    if continuity not in CONTINUITIES:
-        raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
-    edges = _edgeIndices(shape, hole)
-    spec = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in (edgeContinuity or {}).items())
-    face, model, rep = HoleFillApp.fillHole(_brep(shape), edges, method, continuity, float(tolerance),
-                                           float(angularTolerance), float(curvatureTolerance),
-                                           int(maxControlPoints), progress, bool(sewn), spec, bool(detectCreases),
-                                           bool(modelAccuracy))
-    report = json.loads(rep)
-    if report["status"] in ("failed", "cancelled"):
-        where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
-        raise HoleFillError("fill %s at stage '%s': %s%s" % (report["status"], report["failed_stage"],
-                                                             report["message"], " (edges %s)" % where if where else ""))
-    f = _shape(face).Faces[0]
-    if sewn:
-        return f, _shape(model), report
-    return f, report
+    return PreparedHole(shape, hole).fill(method, continuity, tolerance, angularTolerance, curvatureTolerance,
+                                          maxControlPoints, progress, sewn, edgeContinuity, detectCreases,
+                                          modelAccuracy)
 
 
 def fillAdjacentHoles(shape, hole, divider, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,

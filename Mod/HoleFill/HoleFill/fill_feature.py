@@ -68,10 +68,10 @@ class FillFeature:
         if src is None or not hasattr(src, "Shape"):
             raise HoleFill.HoleFillError("Fill has no source object with a shape")
         edges = [s for s in subs if s.startswith("Edge")] or 1
-        res = HoleFill.fillHole(src.Shape, edges, method=obj.Method, continuity=obj.Continuity,
-                                tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
-                                sewn=obj.Output == "Sewn", progress=progressHook,
-                                edgeContinuity=edgeContinuityDict(obj.EdgeContinuity))
+        res = self.prepared(src.Shape, edges).fill(method=obj.Method, continuity=obj.Continuity,
+                                                   tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
+                                                   sewn=obj.Output == "Sewn", progress=progressHook,
+                                                   edgeContinuity=edgeContinuityDict(obj.EdgeContinuity))
         obj.Shape = res[1] if obj.Output == "Sewn" else res[0]
         report = res[-1]
         obj.Status = report["status"]
@@ -80,6 +80,18 @@ class FillFeature:
         obj.Report = json.dumps(report)
         if report["status"] != "ok":
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, report["message"]))
+
+    def prepared(self, shape, edges):
+        """The source's hole, prepared once while the source shape and the picked edges stay the
+        same: a Preview that changes the method, continuity, tolerance or output reuses the model
+        read, the hole found, its samples and parameterizations (HoleFill.PreparedHole). Not saved."""
+        key = edges if edges == 1 else tuple(edges)
+        last = getattr(self, "_prepared", None)
+        if last is not None and last[0] == key and last[1].isSame(shape):
+            return last[2]
+        hole = HoleFill.prepareHole(shape, edges)
+        self._prepared = (key, shape, hole)
+        return hole
 
     def __getstate__(self):
         return None

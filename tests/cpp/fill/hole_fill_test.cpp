@@ -324,3 +324,58 @@ TEST(HoleFill, ClosedResultsAreOrientedOutward) {
   }
   EXPECT_EQ(checked, 2 * 10);  // the U block has ten faces
 }
+
+// The precompute/solve split: a prepared hole is filled again with other settings from the samples
+// and parameterizations it kept, gives the fill fillHole gives, and its model is never modified.
+TEST(HoleFill, PreparedHoleReusesSamplesAndParameterizations) {
+  const TopoDS_Shape model = samples::panelWithHole(6, 11);
+  const std::string before = shapeToBrepString(model);
+  PreparedHole prepared(model, 0);
+  HoleFillOptions o;
+  o.method = ParamMethod::MeanValue;
+  const HoleFillResult first = prepared.fill(o);
+  ASSERT_EQ(first.status, FillStatus::Ok) << first.message;
+  const int samplings = prepared.cache().samplings, parameterizations = prepared.cache().parameterizations;
+  EXPECT_GE(samplings, 1);
+  EXPECT_GE(parameterizations, 1);
+  EXPECT_EQ(shapeToBrepString(model), before) << "after the first";
+  for (Continuity c : {Continuity::G0, Continuity::G2, Continuity::G1}) {
+    o.continuity = c;
+    o.sew = c != Continuity::G0;
+    const HoleFillResult again = prepared.fill(o);
+    EXPECT_NE(again.status, FillStatus::Failed) << again.message;
+    EXPECT_EQ(again.requested, toString(c));
+    EXPECT_EQ(again.holeIndex, 0);
+    EXPECT_EQ(shapeToBrepString(model), before) << "after " << toString(c);
+  }
+  EXPECT_EQ(prepared.cache().samplings, samplings);
+  EXPECT_EQ(prepared.cache().parameterizations, parameterizations);
+  EXPECT_EQ(shapeToBrepString(model), before);
+  // The last prepared fill (G1, sewn) is fillHole's own, pole for pole.
+  o.continuity = Continuity::G1;
+  const HoleFillResult direct = fillHole(model, 0, o), last = prepared.fill(o);
+  ASSERT_EQ(direct.status, FillStatus::Ok) << direct.message;
+  ASSERT_EQ(direct.polesU, last.polesU);
+  ASSERT_EQ(direct.polesV, last.polesV);
+  Handle(Geom_BSplineSurface) a = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(direct.face));
+  Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(last.face));
+  ASSERT_FALSE(a.IsNull());
+  ASSERT_FALSE(b.IsNull());
+  for (int i = 1; i <= a->NbUPoles(); ++i)
+    for (int j = 1; j <= a->NbVPoles(); ++j) EXPECT_LT(a->Pole(i, j).Distance(b->Pole(i, j)), 1e-12);
+  // Other sampling options start the kept samples afresh.
+  o.sampling.minSamplesPerEdge = 80;
+  EXPECT_EQ(prepared.fill(o).status, FillStatus::Ok);
+  EXPECT_EQ(prepared.cache().samplings, 1);
+}
+
+TEST(HoleFill, PreparedHoleFilledInPlaceIsFilledOnce) {
+  const TopoDS_Shape model = samples::panelWithHole(6, 11);
+  PreparedHole prepared(model, 0);
+  HoleFillOptions o;
+  o.copyModel = false;
+  EXPECT_EQ(prepared.fill(o).status, FillStatus::Ok);
+  EXPECT_THROW(prepared.fill(o), Error);
+  EXPECT_THROW(PreparedHole(model, 5), Error);
+  EXPECT_THROW(PreparedHole(TopoDS_Shape(), std::vector<int>{1}), Error);
+}
