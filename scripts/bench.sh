@@ -25,6 +25,9 @@
 #     vs FreeCAD Surface Filling on the B-rep hole corpus (scripts/make_corpus.sh: every eligible
 #     face of the real models in occt-misc and freecad-common removed, judged per edge against the
 #     removed face). BENCH_ONLY=corpus runs part 8 alone (BENCH_CORPUS_EVERY=k for every k-th hole).
+#  9. tests/bench/bench_preview.py in freecadcmd: the Fill task panel's Preview (a Fill recomputed
+#     after each continuity change) with the prepared hole kept, with a fresh fill each time, and
+#     FreeCAD Surface Filling's recompute, on every 23rd corpus hole. BENCH_ONLY=preview runs part 9 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -72,6 +75,21 @@ bench_corpus() {
     rm -rf "$HOME"
   )
 }
+bench_preview() {
+  export CORPUS_OUT="$root/corpus-out/brep"
+  [ -f "$CORPUS_OUT/index.json" ] || "$root/scripts/make_corpus.sh"
+  (
+    . tests/fcenv.sh "$build/Mod/HoleFill"
+    BENCH_CORPUS="$CORPUS_OUT" freecadcmd tests/bench/bench_preview.py 2>&1 |
+      grep -v '^ *#\|^$\|Juergen\|licensed\|wouldn.t be possible\|Libs:\|Recompute\|(100 %)\|(50 %)\|^ *[0-9]*/[0-9]* '
+    rm -rf "$HOME"
+  )
+}
+if [ "${BENCH_ONLY:-}" = preview ]; then  # BENCH_ONLY=preview runs part 9 alone
+  bench_preview
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = corpus ]; then  # BENCH_ONLY=corpus runs part 8 alone
   bench_corpus
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
@@ -133,4 +151,5 @@ bench_fitting
 bench_cloud_params
 bench_thb
 bench_corpus
+bench_preview
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

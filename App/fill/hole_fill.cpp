@@ -538,9 +538,13 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         a.status = ri.status;
         a.reportRatio = reportRatio(ri, strict);
         // Denser samples pay for a fill that met its tolerances at its samples but not between
-        // them, or whose refinement ran out of samples to split spans by; a third density only
-        // when the second did better than the first.
-        const bool denser = ri.status == FillStatus::ToleranceNotMet && (a.vf.toleranceMet || a.vf.samplesTooSparse) &&
+        // them, that misses them between its samples by far more than at them (the samples do not
+        // resolve the boundary: seen on G2 requests along long B-spline strips, 0.33 at the samples
+        // and 5.4 between them), or whose refinement ran out of samples to split spans by; a third
+        // density only when the second did better than the first.
+        const bool underResolved = a.reportRatio > kDensify * std::max(a.ratio, 1.0);
+        const bool denser = ri.status == FillStatus::ToleranceNotMet &&
+                            (a.vf.toleranceMet || a.vf.samplesTooSparse || underResolved) &&
                             (density == 1 || a.reportRatio < 0.5 * lastRatio);
         lastRatio = a.reportRatio;
         tries.push_back(toString(a.method) + (density > 1 ? " (" + std::to_string(density) + "x samples)" : "") + ": " +

@@ -340,6 +340,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     const size_t fixedRows = sys.rows.size();
     Eigen::VectorXd x;
     const int curvatureRounds = o.continuity == Continuity::G2 ? o.curvatureIterations + 1 : 1;
+    std::vector<double> carried;  // the fixed rows' shifted targets after the last curvature round
     for (int cr = 0; cr < curvatureRounds; ++cr) {
       sys.rows.resize(fixedRows);
       if (cr > 0) {
@@ -360,8 +361,14 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       const double tAssemble = std::chrono::duration<double>(std::chrono::steady_clock::now() - ta).count();
       const auto ti = std::chrono::steady_clock::now();
       int iterations = 0;
+      // The fixed rows (G0, G1, guides) are the same in every curvature round: their shifted targets
+      // (the multipliers) carry over, so a G2 round starts from the G0 and G1 the last one reached
+      // instead of from the plain penalty solution (which, on long thin fills, its few rounds before
+      // stalling did not bring back to the G0 tolerance: the G2-linearized rounds then lost to the
+      // unlinearized one, and the fill met G0 but missed G2 by a factor 40).
       std::vector<double> targets(sys.rows.size());
-      for (size_t i = 0; i < sys.rows.size(); ++i) targets[i] = sys.rows[i].target;
+      for (size_t i = 0; i < sys.rows.size(); ++i)
+        targets[i] = i < fixedRows && i < carried.size() ? carried[i] : sys.rows[i].target;
       Errors levelBest;
       Eigen::VectorXd levelX;
       std::vector<double> history;
@@ -380,6 +387,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
         for (size_t i = 0; i < sys.rows.size(); ++i)
           if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
       }
+      carried.assign(targets.begin(), targets.begin() + fixedRows);
       x = levelX;
       if (std::getenv("HOLEFILL_DEBUG"))
         std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu; assemble %.3fs, %d rounds %.3fs\n",
