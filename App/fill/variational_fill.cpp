@@ -387,7 +387,12 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
         for (size_t i = 0; i < sys.rows.size(); ++i)
           if (sys.rows[i].multiplier) targets[i] -= rowValue(sys, sys.rows[i], x) - sys.rows[i].target;
       }
-      carried.assign(targets.begin(), targets.begin() + fixedRows);
+      // Carried only from a round that missed: one that met every tolerance needs no help, and a
+      // fresh start lets the next round's own multiplier rounds run on to the margin, which the
+      // interior inherits (a patch refilled on its own pcurves at G2 moved 1.2e-6 of its size off
+      // itself when a met round's multipliers were carried and the next round stopped at once).
+      if (levelBest.violating.empty()) carried.clear();
+      else carried.assign(targets.begin(), targets.begin() + fixedRows);
       x = levelX;
       if (std::getenv("HOLEFILL_DEBUG"))
         std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu; assemble %.3fs, %d rounds %.3fs\n",
