@@ -5,10 +5,6 @@
 #include <BRep_Tool.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <Interface_Static.hxx>
-#include <STEPControl_Reader.hxx>
-#include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -24,6 +20,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "brep/step_io.h"
 #include "geometry/error.h"
 #include "geometry/text_file.h"
 #include "geometry/tolerances.h"
@@ -45,11 +42,7 @@ TopoDS_Shape readInProcess(const std::string& path, const std::string& ext) {
     if (!BRepTools::Read(shape, path.c_str(), b) || shape.IsNull())
       throw Error("cannot read '" + path + "': not a valid BREP file");
   } else if (ext == "step" || ext == "stp") {
-    STEPControl_Reader reader;
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw Error("cannot read '" + path + "': not a valid STEP file");
-    reader.TransferRoots();
-    shape = reader.OneShape();
-    if (shape.IsNull()) throw Error("'" + path + "' holds no shape");
+    shape = readStep(path);
   } else {
     throw Error("unsupported file type '" + ext + "' of '" + path + "': use .brep or .step");
   }
@@ -142,9 +135,13 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
     if (ext == "brep" || ext == "brp") {
       ok = BRepTools::Write(shape, tmp.c_str());
     } else if (ext == "step" || ext == "stp") {
-      STEPControl_Writer w;
-      Interface_Static::SetCVal("write.step.schema", "AP214IS");
-      ok = w.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone && w.Write(tmp.c_str()) == IFSelect_RetDone;
+      try {
+        writeStep(shape, tmp);
+        ok = true;
+      } catch (const Error& e) {
+        std::remove(tmp.c_str());
+        throw Error("cannot write '" + path + "': " + e.what());
+      }
     } else {
       throw Error("unsupported output type '." + ext + "' of '" + path + "': use .brep or .step");
     }

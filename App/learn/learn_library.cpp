@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/error.h"
+#include "geometry/plugin_library.h"
 
 namespace holefill::learn {
 
@@ -22,22 +23,11 @@ std::string dirOf(const std::string& p) {
   return k == std::string::npos ? "." : p.substr(0, k);
 }
 
-std::string thisModuleDir() {
-  Dl_info info;
-  if (dladdr(reinterpret_cast<void*>(&learnLibrary), &info) && info.dli_fname) return dirOf(info.dli_fname);
-  return ".";
-}
-
-std::vector<std::string> candidates() {
-  std::vector<std::string> c;
-  if (const char* e = std::getenv("HOLEFILL_LEARN_LIBRARY")) c.push_back(e);
-  const std::string here = thisModuleDir();
-  c.push_back(here + "/libholefill_learn.so");
 #ifdef HOLEFILL_BUILD_LEARN_LIBRARY
-  c.push_back(HOLEFILL_BUILD_LEARN_LIBRARY);
+constexpr const char* kBuildLibrary = HOLEFILL_BUILD_LEARN_LIBRARY;
+#else
+constexpr const char* kBuildLibrary = nullptr;
 #endif
-  return c;
-}
 
 }  // namespace
 
@@ -48,20 +38,20 @@ const LearnLibrary& learnLibrary() {
   std::lock_guard<std::mutex> lock(m);
   if (lib.predict) return lib;
   if (!failure.empty()) throw Error(failure);
-  std::string tried;
-  for (const auto& path : candidates()) {
-    if (!exists(path)) { tried += " " + path + " (missing);"; continue; }
-    void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!h) { tried += " " + path + " (" + dlerror() + ");"; continue; }
+  std::string path, tried;
+  void* h = openPluginLibrary("libholefill_learn.so", "HOLEFILL_LEARN_LIBRARY", kBuildLibrary, path, tried);
+  if (h) {
     LearnLibrary l;
     l.path = path;
     l.predict = reinterpret_cast<HoleFillUvtranPredictFn>(dlsym(h, "holefill_uvtran_predict"));
     l.bidgcnPredict = reinterpret_cast<HoleFillBidgcnPredictFn>(dlsym(h, "holefill_bidgcn_predict"));
     l.main = reinterpret_cast<HoleFillLearnMainFn>(dlsym(h, "holefill_learn_main"));
     l.info = reinterpret_cast<HoleFillLearnInfoFn>(dlsym(h, "holefill_learn_info"));
-    if (!l.predict || !l.bidgcnPredict || !l.main || !l.info) { tried += " " + path + " (entry points missing);"; continue; }
-    lib = l;
-    return lib;
+    if (l.predict && l.bidgcnPredict && l.main && l.info) {
+      lib = l;
+      return lib;
+    }
+    tried += " " + path + " (entry points missing);";
   }
   failure = "the learned-model library could not be loaded:" + tried;
   throw Error(failure);
@@ -76,7 +66,7 @@ std::string shippedWeights(const char* variable, const std::string& file) {
     c.push_back(dirOf(learnLibrary().path) + "/Resources/models/" + file);
   } catch (const Error&) {
   }
-  c.push_back(thisModuleDir() + "/Resources/models/" + file);
+  c.push_back(thisModuleDirectory() + "/Resources/models/" + file);
 #ifdef HOLEFILL_SOURCE_DIR
   c.push_back(std::string(HOLEFILL_SOURCE_DIR) + "/Resources/models/" + file);
 #endif
