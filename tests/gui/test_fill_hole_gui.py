@@ -22,6 +22,14 @@ def visible_hole_edge(view, obj, edge_names):
     return None, 0, 0
 
 
+def click_button(button):
+    """A real mouse click at the button's centre (xdotool)."""
+    g = button.mapToGlobal(button.rect().center())
+    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
+    h.pump(200)
+    subprocess.run(["xdotool", "click", "1"], check=True)
+
+
 def body():
     import HoleFill
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
@@ -64,6 +72,28 @@ def body():
     assert set(rows) == set(hole.edges), rows
     table.cellWidget(rows[name], 1).setCurrentText("G0")
     h.pump(200)
+    # Preview, change the continuity, Preview again: the second Preview reuses the hole the first
+    # one prepared (issue 20: the precompute/solve split), and reports the new request.
+    previews = [b for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible() and b.text() == "Preview"]
+    assert len(previews) == 1, [b.text() for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible()]
+    click_button(previews[0])
+    h.pump(1500)
+    fill = [o for o in doc.Objects if o.Name.startswith("Fill")][0]
+    prepared = fill.Proxy._prepared[2]
+    computed = prepared.computed()
+    combos = [c for c in mw.findChildren(QtWidgets.QComboBox)
+              if c.isVisible() and not table.isAncestorOf(c) and c.findText("G2") >= 0]
+    assert len(combos) == 1, len(combos)
+    combos[0].setCurrentText("G2")
+    h.pump(200)
+    click_button(previews[0])
+    h.pump(3000)
+    import json
+    assert json.loads(fill.Report)["requested"] == "G2", fill.Report[:200]
+    assert fill.Proxy._prepared[2] is prepared and prepared.computed() == computed, prepared.computed()
+    h.log("two Previews, one prepared hole: %s" % (computed,))
+    combos[0].setCurrentText("G1")
+    h.pump(200)
     mw.grab().save(h.shot("gui_fill_1b_panel.png"))
     oks[0].click()
     h.pump(3000)
@@ -74,7 +104,6 @@ def body():
     assert fill.Status == "ok" and fill.G1 <= 1e-3, (fill.Status, fill.G1)
     assert sorted(fill.Source[1]) == [name]
     assert list(fill.EdgeContinuity) == ["%s=G0" % name], fill.EdgeContinuity
-    import json
     per = {"Edge%d" % e["edge"]: e for e in json.loads(fill.Report)["edge_continuity"]}
     assert per[name]["asked"] == "G0" and per[name]["source"] == "override", per[name]
     assert all(e["asked"] == "G1" for n, e in per.items() if n != name), per
