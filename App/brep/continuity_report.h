@@ -29,8 +29,10 @@ struct EdgeContinuity {
   double tolerance = 0;  // the edge's own BRep tolerance now (how far it may lie off its neighbour)
   double toleranceBefore = 0;  // ... as it was when the hole was found (HoleEdge::tolerance)
   // The model's own accuracy at this edge: the largest angle between the edge's 3D curve and the
-  // neighbour's tangent plane. A surface through the curve cannot meet the neighbour's normal
-  // closer than this (0 on an exact model; an imported model's inexact edges reach 1e-3 rad).
+  // neighbour's tangent plane, and at its corners between the neighbour's normal and the plane of
+  // the two edges meeting there (edge_continuity.h cornerMismatch). A surface through the curves
+  // cannot meet the neighbour's normal closer than this (0 on an exact model; an imported model's
+  // inexact edges reach 1e-3 rad).
   double g1Floor = 0;
 };
 

@@ -173,7 +173,7 @@ void classify(HoleFillResult& r, const HoleFillOptions& opt) {
     if (lowered) r.message += "; less than " + r.requested + " asked on " + std::to_string(lowered) + " edge(s)";
     if (!relaxed.empty())
       r.message += "; " + edgeList(relaxed) + " met only to the model's own accuracy there (its edge tolerance, "
-                   "or the angle at which its neighbour meets it: tolerance_before and g1_floor per edge)";
+                   "or the angle at which its neighbour meets it or its corners: tolerance_before and g1_floor per edge)";
   }
 }
 
