@@ -108,6 +108,7 @@ def main():
         skipped[why] = skipped.get(why, 0) + 1
 
     t0 = time.time()
+    stems = set()
     for path in sources():
         rel = os.path.relpath(path, "/usr/share")
         try:
@@ -115,7 +116,12 @@ def main():
         except Exception:
             skip("model unreadable")
             continue
-        stem = os.path.splitext(os.path.basename(path))[0]
+        stem, ext = os.path.splitext(os.path.basename(path))
+        # One model may ship in two formats (occ/hammer.brep and iges/hammer.iges): the second
+        # gets its format in its ids, so that its holes neither share ids nor overwrite folders.
+        if stem in stems:
+            stem = "%s_%s" % (stem, ext.lstrip(".").lower())
+        stems.add(stem)
         for pi, part in enumerate(parts_of(model)):
             faces = part.Faces
             if len(faces) > MAX_PART_FACES:
