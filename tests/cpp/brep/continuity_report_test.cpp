@@ -44,6 +44,17 @@ bool partWithoutFace(const std::string& file, int k, TopoDS_Shape& holed, TopoDS
   return !removed.IsNull();
 }
 
+// The one hole of partWithoutFace's part, and its truth; false when the model is not installed.
+bool realHole(const std::string& file, int k, Hole& hole, TopoDS_Face& truth) {
+  TopoDS_Shape holed;
+  if (!partWithoutFace(file, k, holed, truth)) return false;
+  const HoleDetectionResult det = detectHoles(holed);
+  if (det.holes.size() != 1) ADD_FAILURE() << file << " without face " << k << ": " << det.holes.size() << " holes";
+  if (det.holes.empty()) return false;
+  hole = det.holes[0];
+  return true;
+}
+
 }  // namespace
 
 TEST(ContinuityReport, ExactNeighboursHaveNoFloor) {
@@ -64,16 +75,14 @@ TEST(ContinuityReport, InexactNeighboursShowTheirOwnAccuracy) {
   // Top.brep face 138 (a B-spline patch from an imported model): its edges' 3D curves lie off their
   // neighbours by up to their tolerances, and the neighbours meet them at an angle. The report gives
   // the original face's own errors against the hole, beside what the model allows at each edge.
-  TopoDS_Shape holed;
+  Hole hole;
   TopoDS_Face truth;
-  if (!partWithoutFace("Top.brep", 138, holed, truth)) GTEST_SKIP() << "occt-misc's Top.brep is not installed";
-  const HoleDetectionResult det = detectHoles(holed);
-  ASSERT_EQ(det.holes.size(), 1u);
-  const ContinuityReport r = continuityReport(truth, det.holes[0]);
-  ASSERT_EQ(r.edges.size(), det.holes[0].edges.size());
+  if (!realHole("Top.brep", 138, hole, truth)) GTEST_SKIP() << "occt-misc's Top.brep is not installed";
+  const ContinuityReport r = continuityReport(truth, hole);
+  ASSERT_EQ(r.edges.size(), hole.edges.size());
   double worstFloor = 0, worstTolerance = 0;
   for (size_t i = 0; i < r.edges.size(); ++i) {
-    EXPECT_EQ(r.edges[i].toleranceBefore, det.holes[0].edges[i].tolerance);
+    EXPECT_EQ(r.edges[i].toleranceBefore, hole.edges[i].tolerance);
     worstFloor = std::max(worstFloor, r.edges[i].g1Floor);
     worstTolerance = std::max(worstTolerance, r.edges[i].toleranceBefore);
     // The original face is no better than the model allows: its G1 error is at least near the floor.
@@ -89,12 +98,9 @@ TEST(ContinuityReport, TiltedNeighboursAtCornersRaiseTheFloor) {
   // 2.8e-3 rad off the plane of the two edges meeting there. Any surface through both edge curves
   // has that plane as its tangent plane at the corner, so G1 <= 1e-3 cannot hold there against
   // those neighbours: the floor of each edge at such a corner is at least the tilt.
-  TopoDS_Shape holed;
+  Hole hole;
   TopoDS_Face truth;
-  if (!partWithoutFace("hammer.brep", 2, holed, truth)) GTEST_SKIP() << "occt-misc's hammer.brep is not installed";
-  const HoleDetectionResult det = detectHoles(holed);
-  ASSERT_EQ(det.holes.size(), 1u);
-  const Hole& hole = det.holes[0];
+  if (!realHole("hammer.brep", 2, hole, truth)) GTEST_SKIP() << "occt-misc's hammer.brep is not installed";
   const std::vector<double> tilt = cornerMismatch(hole);
   const ContinuityReport r = continuityReport(truth, hole);
   int tilted = 0;
