@@ -8,22 +8,19 @@
 
 namespace holefill {
 
-namespace {
-
-bool exists(const std::string& p) {
+bool fileExists(const std::string& path) {
   struct stat st;
-  return !p.empty() && ::stat(p.c_str(), &st) == 0;
+  return !path.empty() && ::stat(path.c_str(), &st) == 0;
 }
 
-}  // namespace
+std::string directoryOf(const std::string& path) {
+  const auto k = path.find_last_of('/');
+  return k == std::string::npos ? "." : path.substr(0, k);
+}
 
 std::string thisModuleDirectory() {
   Dl_info info;
-  if (dladdr(reinterpret_cast<void*>(&thisModuleDirectory), &info) && info.dli_fname) {
-    const std::string p = info.dli_fname;
-    const auto k = p.find_last_of('/');
-    return k == std::string::npos ? "." : p.substr(0, k);
-  }
+  if (dladdr(reinterpret_cast<void*>(&thisModuleDirectory), &info) && info.dli_fname) return directoryOf(info.dli_fname);
   return ".";
 }
 
@@ -35,7 +32,7 @@ void* openPluginLibrary(const std::string& fileName, const char* envVariable, co
   if (buildPath) candidates.push_back(buildPath);
   tried.clear();
   for (const auto& c : candidates) {
-    if (!exists(c)) { tried += " " + c + " (missing);"; continue; }
+    if (!fileExists(c)) { tried += " " + c + " (missing);"; continue; }
     void* h = dlopen(c.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!h) { tried += " " + c + " (" + dlerror() + ");"; continue; }
     path = c;

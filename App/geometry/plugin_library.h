@@ -19,4 +19,7 @@ void* openPluginLibrary(const std::string& fileName, const char* envVariable, co
 // The folder of the binary or shared module holding this code ("." when unknown).
 std::string thisModuleDirectory();
 
+bool fileExists(const std::string& path);
+std::string directoryOf(const std::string& path);  // "." for a bare file name
+
 }  // namespace holefill

@@ -1,7 +1,6 @@
 #include "learn/learn_library.h"
 
 #include <dlfcn.h>
-#include <sys/stat.h>
 
 #include <mutex>
 #include <vector>
@@ -12,16 +11,6 @@
 namespace holefill::learn {
 
 namespace {
-
-bool exists(const std::string& p) {
-  struct stat st;
-  return !p.empty() && ::stat(p.c_str(), &st) == 0;
-}
-
-std::string dirOf(const std::string& p) {
-  const auto k = p.find_last_of('/');
-  return k == std::string::npos ? "." : p.substr(0, k);
-}
 
 #ifdef HOLEFILL_BUILD_LEARN_LIBRARY
 constexpr const char* kBuildLibrary = HOLEFILL_BUILD_LEARN_LIBRARY;
@@ -63,7 +52,7 @@ std::string shippedWeights(const char* variable, const std::string& file) {
   if (const char* e = std::getenv(variable)) return e;
   std::vector<std::string> c;
   try {
-    c.push_back(dirOf(learnLibrary().path) + "/Resources/models/" + file);
+    c.push_back(directoryOf(learnLibrary().path) + "/Resources/models/" + file);
   } catch (const Error&) {
   }
   c.push_back(thisModuleDirectory() + "/Resources/models/" + file);
@@ -71,7 +60,7 @@ std::string shippedWeights(const char* variable, const std::string& file) {
   c.push_back(std::string(HOLEFILL_SOURCE_DIR) + "/Resources/models/" + file);
 #endif
   for (const auto& p : c)
-    if (exists(p)) return p;
+    if (fileExists(p)) return p;
   return "";
 }
 

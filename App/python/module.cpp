@@ -80,7 +80,7 @@ py::tuple fillTuple(const HoleFillResult& r) {
   return py::make_tuple(py::bytes(face), py::bytes(shape), toJson(r));
 }
 
-// One prepared hole's fill, as HoleFillApp.fillHole and PreparedHole.fill take it.
+// One fill of a prepared hole (HoleFill.fillHole is PreparedHole(...).fill(...)).
 py::tuple fillPrepared(PreparedHole& hole, const std::string& method, const std::string& continuity, double tolerance,
                        double angularTolerance, double curvatureTolerance, int maxControlPoints,
                        const std::function<bool(double)>& progress, bool sew, const std::string& edgeContinuity,
@@ -96,14 +96,6 @@ py::tuple fillPrepared(PreparedHole& hole, const std::string& method, const std:
 
 std::unique_ptr<PreparedHole> prepare(const std::string& brep, const std::vector<int>& edges) {
   return guarded([&] { return std::make_unique<PreparedHole>(shapeFromBrepString(brep), edges); });
-}
-
-py::tuple fill(const std::string& brep, const std::vector<int>& edges, const std::string& method,
-               const std::string& continuity, double tolerance, double angularTolerance, double curvatureTolerance,
-               int maxControlPoints, const std::function<bool(double)>& progress, bool sew,
-               const std::string& edgeContinuity, bool detectCreases, bool modelAccuracy) {
-  return fillPrepared(*prepare(brep, edges), method, continuity, tolerance, angularTolerance, curvatureTolerance,
-                      maxControlPoints, progress, sew, edgeContinuity, detectCreases, modelAccuracy);
 }
 
 // (BREP of the two faces as a compound, BREP of the model with both, report JSON).
@@ -201,11 +193,6 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("brep"), py::arg("includeOuter") = false, py::arg("cornerAngleDeg") = 5.0,
      "Holes of a BREP shape as JSON text.");
-  m.def("fillHole", &fill, py::arg("brep"), py::arg("edges"), py::arg("method") = "auto", py::arg("continuity") = "G1",
-        py::arg("tolerance") = 0.0, py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1,
-        py::arg("maxControlPoints") = 0, py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true,
-        py::arg("edgeContinuity") = "", py::arg("detectCreases") = true, py::arg("modelAccuracy") = true,
-        "Fill the hole holding the given 1-based edge indices: (face BREP, sewn model BREP, report JSON).");
   py::class_<PreparedHole>(m, "PreparedHole",
                            "A hole read and found once, filled as often as asked: its boundary samples and "
                            "parameterizations are kept between fills (a Preview that changes only the method, "
@@ -215,7 +202,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
            py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,
            py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true, py::arg("edgeContinuity") = "",
            py::arg("detectCreases") = true, py::arg("modelAccuracy") = true,
-           "Fill it: (face BREP, sewn model BREP, report JSON), as fillHole.")
+           "Fill it: (face BREP, sewn model BREP, report JSON).")
       .def("computed", [](const PreparedHole& h) { return py::make_tuple(h.cache().samplings, h.cache().parameterizations); },
            "(boundary samplings, parameterizations) computed so far; the rest came from the kept ones.");
   m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"),

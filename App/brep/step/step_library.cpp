@@ -1,5 +1,6 @@
 // libholefill_step.so: OCCT's STEP translator behind two plain entry points (brep/step_io.h loads
-// this library on first use). Linked to OCCT's STEP libraries, and nothing else is.
+// this library on first use). Linked to OCCT's STEP libraries, and nothing else is; of the core it
+// holds only geometry/error (one line for an OCCT exception, as everywhere else).
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
@@ -10,16 +11,13 @@
 #include <cstdio>
 #include <string>
 
+#include "geometry/error.h"
+
 namespace {
 
 int fail(char* err, int errLen, const std::string& message) {
   std::snprintf(err, static_cast<size_t>(errLen), "%s", message.c_str());
   return 1;
-}
-
-std::string failure(const Standard_Failure& e) {
-  const char* m = e.GetMessageString();
-  return std::string(e.DynamicType()->Name()) + (m && *m ? std::string(": ") + m : " (no message)");
 }
 
 }  // namespace
@@ -35,7 +33,7 @@ int holefill_step_read(const char* path, TopoDS_Shape* out, char* err, int errLe
     *out = reader.OneShape();
     return out->IsNull() ? fail(err, errLen, "it holds no shape") : 0;
   } catch (const Standard_Failure& e) {
-    return fail(err, errLen, failure(e));
+    return fail(err, errLen, holefill::occtFailure(e));
   }
 }
 
@@ -48,7 +46,7 @@ int holefill_step_write(const TopoDS_Shape* shape, const char* path, char* err, 
     if (w.Write(path) != IFSelect_RetDone) return fail(err, errLen, "the STEP file could not be written");
     return 0;
   } catch (const Standard_Failure& e) {
-    return fail(err, errLen, failure(e));
+    return fail(err, errLen, holefill::occtFailure(e));
   }
 }
 
