@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <signal.h>
 #include <sstream>
 #include <sys/stat.h>
@@ -21,7 +22,9 @@
 #include <unistd.h>
 
 #include "brep/step_io.h"
+#include "geometry/atomic_file.h"
 #include "geometry/error.h"
+#include "geometry/supervised_child.h"
 #include "geometry/text_file.h"
 #include "geometry/tolerances.h"
 
@@ -39,13 +42,41 @@ TopoDS_Shape readInProcess(const std::string& path, const std::string& ext) {
   TopoDS_Shape shape;
   if (ext == "brep" || ext == "brp") {
     BRep_Builder b;
-    if (!BRepTools::Read(shape, path.c_str(), b) || shape.IsNull())
-      throw Error("cannot read '" + path + "': not a valid BREP file");
+    // OCCT's BREP reader says what it could not parse on std::cout, which would corrupt the
+    // CLI's --json output: it is caught here and becomes part of the error instead.
+    std::ostringstream said;
+    std::streambuf* const out = std::cout.rdbuf(said.rdbuf());
+    bool ok = false;
+    try {
+      ok = BRepTools::Read(shape, path.c_str(), b);
+    } catch (...) {
+      std::cout.rdbuf(out);
+      throw;
+    }
+    std::cout.rdbuf(out);
+    if (!ok || shape.IsNull()) {
+      std::istringstream lines(said.str());
+      std::string why, line;
+      while (std::getline(lines, line))
+        if (line.find_first_not_of(" \t\r") != std::string::npos) why += (why.empty() ? "" : "; ") + line;
+      throw Error("cannot read '" + path + "': not a valid BREP file" + (why.empty() ? "" : " (" + why + ")"));
+    }
   } else if (ext == "step" || ext == "stp") {
     shape = readStep(path);
   } else {
     throw Error("unsupported file type '" + ext + "' of '" + path + "': use .brep or .step");
   }
+  return shape;
+}
+
+TopoDS_Shape readCheckedInProcess(const std::string& path, const std::string& ext) {
+  TopoDS_Shape shape;
+  try {
+    shape = readInProcess(path, ext);
+  } catch (const Standard_Failure& e) {
+    throw Error("cannot read '" + path + "': " + e.GetMessageString());
+  }
+  validateShape(shape);
   return shape;
 }
 
@@ -88,14 +119,18 @@ TopoDS_Shape readShape(const std::string& path, double timeLimit) {
   const std::string ext = fileExtension(path);
   if (ext != "brep" && ext != "brp" && ext != "step" && ext != "stp")
     throw Error("unsupported file type '." + ext + "' of '" + path + "': use .brep or .step");
+  if (supervised()) {
+    // The whole command runs in a watched child already: one read, stopped by its time limit.
+    SupervisedStep step("reading '" + path + "'", timeLimit, true);
+    return readCheckedInProcess(path, ext);
+  }
   // Trial read in a child: a hang or crash there costs only the child.
   fflush(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
     int code = 1;
     try {
-      const TopoDS_Shape s = readInProcess(path, ext);
-      validateShape(s);
+      readCheckedInProcess(path, ext);
       code = 0;
     } catch (...) {
     }
@@ -116,43 +151,33 @@ TopoDS_Shape readShape(const std::string& path, double timeLimit) {
     }
     if (WIFSIGNALED(status)) throw Error("'" + path + "' is corrupt: the reader crashed on it");
   }
-  TopoDS_Shape shape;
-  try {
-    shape = readInProcess(path, ext);
-  } catch (const Standard_Failure& e) {
-    throw Error("cannot read '" + path + "': " + e.GetMessageString());
-  }
-  validateShape(shape);
-  return shape;
+  return readCheckedInProcess(path, ext);
 }
 
 void writeShape(const TopoDS_Shape& shape, const std::string& path) {
   if (shape.IsNull()) throw Error("nothing to write to '" + path + "': the shape is empty");
   const std::string ext = fileExtension(path);
-  const std::string tmp = path + ".tmp" + std::to_string(getpid()) + "." + ext;
+  if (ext != "brep" && ext != "brp" && ext != "step" && ext != "stp")
+    throw Error("unsupported output type '." + ext + "' of '" + path + "': use .brep or .step");
+  const std::string tmp = temporaryFileFor(path);
   bool ok = false;
   try {
     if (ext == "brep" || ext == "brp") {
       ok = BRepTools::Write(shape, tmp.c_str());
-    } else if (ext == "step" || ext == "stp") {
-      try {
-        writeStep(shape, tmp);
-        ok = true;
-      } catch (const Error& e) {
-        std::remove(tmp.c_str());
-        throw Error("cannot write '" + path + "': " + e.what());
-      }
     } else {
-      throw Error("unsupported output type '." + ext + "' of '" + path + "': use .brep or .step");
+      writeStep(shape, tmp);
+      ok = true;
     }
+  } catch (const Error& e) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + e.what());
   } catch (const Standard_Failure& e) {
     std::remove(tmp.c_str());
     throw Error("cannot write '" + path + "': " + e.GetMessageString());
   }
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
+  if (!ok) std::remove(tmp.c_str());
+  if (!ok || !commitTemporaryFile(tmp, path))
     throw Error("cannot write '" + path + "': check the folder exists and is writable");
-  }
 }
 
 TopoDS_Shape shapeFromBrepString(const std::string& brep) {

@@ -1,7 +1,9 @@
 // Reading and writing B-rep files as untrusted data (DESIGN.md "Files are
 // untrusted"). OCCT's readers can hang on truncated BREP text and crash on
-// malformed STEP, so a file is first read in a forked child under a time limit;
-// only when that child succeeds is it read in-process. Every shape entering the
+// malformed STEP, so a file is read under a time limit in a process that may die:
+// inside a supervised child (geometry/supervised_child.h, the CLI) it is read once,
+// as a step the parent watches; elsewhere it is first read in a throwaway child and,
+// only when that succeeds, read in-process. Every shape entering the
 // core is checked for finite, bounded coordinates. Writes go to a temporary file
 // that is renamed into place, so a failure never leaves a half-written output.
 #pragma once

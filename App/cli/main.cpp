@@ -1,7 +1,8 @@
 // holefill: the command-line door into the core (DESIGN.md), as thin as the
 // Python one. Exit codes: 0 done; 1 bad usage or input (one clear line on
 // stderr, nothing written); 2 the fill failed (nothing written); 3 the fill was
-// written but did not reach the requested continuity (the report says what it reached).
+// written but did not reach the requested continuity (the report says what it reached);
+// 4 holefill crashed on a step that is not reading the input (a bug; nothing left written).
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRep_Builder.hxx>
 #include <Message.hxx>
@@ -43,6 +44,7 @@
 #include "geometry/bspline_surface.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "geometry/supervised_child.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
 #include "mesh/mesh_hole_fill.h"
@@ -626,22 +628,9 @@ int cmdSamples(const Args& a) {
   return 0;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
-  // OCCT's readers and writers print statistics on stdout, which would corrupt --json output.
-  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+int runVerb(int argc, char** argv) {
   try {
-    if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
-      std::printf("holefill 0.1.0\n");
-      return 0;
-    }
-    if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
-      std::printf("%s", kUsage);
-      return 0;
-    }
-    if (argc >= 2 && (std::string(argv[1]) == "train" || std::string(argv[1]) == "eval"))
-      return learn::learnLibrary().main(argc - 1, argv + 1);  // loads libtorch only for these verbs
     const Args a = parse(argc, argv);
     if (a.verb == "holes") return cmdHoles(a);
     if (a.verb == "fill") return cmdFill(a);
@@ -662,4 +651,29 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "holefill: %s\n", e.what());
   }
   return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // OCCT's readers and writers print statistics on stdout, which would corrupt --json output.
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+  try {
+    if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
+      std::printf("holefill 0.1.0\n");
+      return 0;
+    }
+    if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+      std::printf("%s", kUsage);
+      return 0;
+    }
+    if (argc >= 2 && (std::string(argv[1]) == "train" || std::string(argv[1]) == "eval"))
+      return learn::learnLibrary().main(argc - 1, argv + 1);  // loads libtorch only for these verbs
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "holefill: %s\n", e.what());
+    return 1;
+  }
+  // Every other verb reads untrusted files and runs geometry kernels: it runs in a watched
+  // child, so a crash or a hang on a bad input is one clear line and no file left behind.
+  return runSupervised([&] { return runVerb(argc, argv); });
 }
