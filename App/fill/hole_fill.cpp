@@ -255,6 +255,36 @@ HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeE
   return PreparedHole(model, holeEdges, opt.detection).fill(opt);
 }
 
+namespace {
+
+// The faces of `model` that BRepCheck finds invalid before the fill: the hole's neighbours, and
+// every face when wholeModel. Sorted 1-based face indices.
+std::vector<int> invalidFacesBefore(const TopoDS_Shape& model, const Hole& hole, bool wholeModel) {
+  TopTools_IndexedMapOfShape modelFaces;
+  TopExp::MapShapes(model, TopAbs_FACE, modelFaces);
+  auto valid = [&](int f) {
+    try {
+      return BRepCheck_Analyzer(modelFaces(f)).IsValid() == Standard_True;
+    } catch (const Standard_Failure&) {
+      return false;  // a face the checker cannot even analyse is not valid
+    }
+  };
+  std::vector<int> checked, invalid;
+  for (const auto& he : hole.edges) {
+    if (std::find(checked.begin(), checked.end(), he.supportIndex) != checked.end()) continue;
+    checked.push_back(he.supportIndex);
+    if (he.supportIndex >= 1 && he.supportIndex <= modelFaces.Extent() && !valid(he.supportIndex))
+      invalid.push_back(he.supportIndex);
+  }
+  if (wholeModel)
+    for (int f = 1; f <= modelFaces.Extent(); ++f)
+      if (std::find(checked.begin(), checked.end(), f) == checked.end() && !valid(f)) invalid.push_back(f);
+  std::sort(invalid.begin(), invalid.end());
+  return invalid;
+}
+
+}  // namespace
+
 HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const HoleFillOptions& opt, double elapsed,
                           FillCache* cache) {
   if (work.IsNull()) throw Error("the shape is empty: nothing to fill");
@@ -275,30 +305,6 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       if (q.source == "crease")
         r.warnings.push_back("Edge" + std::to_string(q.edgeIndex) + " is a crease (its support is " +
                              std::to_string(q.cornerMismatch * 180 / M_PI) + " deg off the corner plane): asked G0 there");
-    // Pre-existing state: the neighbours as the user's model has them (and the whole model when asked).
-    {
-      TopTools_IndexedMapOfShape modelFaces;
-      TopExp::MapShapes(model, TopAbs_FACE, modelFaces);
-      std::vector<int> checked;
-      for (const auto& he : r.hole.edges) {
-        if (std::find(checked.begin(), checked.end(), he.supportIndex) != checked.end()) continue;
-        checked.push_back(he.supportIndex);
-        if (he.supportIndex >= 1 && he.supportIndex <= modelFaces.Extent() &&
-            !BRepCheck_Analyzer(modelFaces(he.supportIndex)).IsValid())
-          r.invalidBefore.push_back(he.supportIndex);
-      }
-      if (opt.checkModel)
-        for (int f = 1; f <= modelFaces.Extent(); ++f)
-          if (std::find(checked.begin(), checked.end(), f) == checked.end() && !BRepCheck_Analyzer(modelFaces(f)).IsValid())
-            r.invalidBefore.push_back(f);
-      std::sort(r.invalidBefore.begin(), r.invalidBefore.end());
-      if (!r.invalidBefore.empty()) {
-        std::string names;
-        for (int f : r.invalidBefore) names += (names.empty() ? "Face" : ", Face") + std::to_string(f);
-        r.warnings.push_back("the input model was already invalid before the fill (BRepCheck) at " + names +
-                             "; the fill is judged on the faces it changes");
-      }
-    }
     r.timings.detect = elapsed + since(t);
     auto cancelled = [&] {
       r.status = FillStatus::Cancelled;
@@ -337,6 +343,35 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       fc.sampling = opt.sampling;
       fc.parameterization = opt.parameterization;
     }
+    // The pre-existing state, checked once per hole (a Preview that changes only weights does not
+    // pay for it again), before the first candidate face goes onto the loop's edges. Checking it on
+    // a thread beside the solve was tried: on this 2-core machine the solve slowed by as much.
+    bool priorStateKnown = false;
+    auto knowPriorState = [&] {
+      if (priorStateKnown) return;
+      priorStateKnown = true;
+      if (!fc.invalidBefore || (opt.checkModel && !fc.checkedWholeModel)) {
+        const auto tc = Clock::now();
+        fc.invalidBefore = invalidFacesBefore(model, hole, opt.checkModel);
+        fc.checkedWholeModel = opt.checkModel;
+        ++fc.priorChecks;
+        r.timings.detect += since(tc);
+      }
+      r.invalidBefore = *fc.invalidBefore;
+      if (!opt.checkModel)  // a whole-model check kept from an earlier fill names more than asked
+        r.invalidBefore.erase(std::remove_if(r.invalidBefore.begin(), r.invalidBefore.end(),
+                                             [&](int f) {
+                                               return std::none_of(hole.edges.begin(), hole.edges.end(),
+                                                                   [f](const HoleEdge& he) { return he.supportIndex == f; });
+                                             }),
+                              r.invalidBefore.end());
+      if (!r.invalidBefore.empty()) {
+        std::string names;
+        for (int f : r.invalidBefore) names += (names.empty() ? "Face" : ", Face") + std::to_string(f);
+        r.warnings.push_back("the input model was already invalid before the fill (BRepCheck) at " + names +
+                             "; the fill is judged on the faces it changes");
+      }
+    };
     using Sampled = SampledBoundary;
     auto sampled = [&](int density) -> const Sampled& {
       auto it = fc.sampled.find(density);
@@ -444,6 +479,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
     HoleFillOptions strict = opt;
     strict.modelAccuracy = false;
     auto judged = [&](const FillAttempt& a, const Sampled& sd, FaceBuildResult& built) {
+      knowPriorState();
       HoleFillResult ri = r;
       ri.chosenMethod = a.method;
       const Parameterization& P = a.P;
@@ -556,6 +592,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
       if (best && results[*best].status == FillStatus::Ok) break;
       if (!progress(0.85)) cancel = true;
     }
+    knowPriorState();
     if (cancel) return cancelled();
     if (!best) throw Error(firstError);
     // The one kept goes back onto the edges and is sewn into the model.

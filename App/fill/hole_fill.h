@@ -13,6 +13,7 @@
 #include <TopoDS_Shape.hxx>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,15 +125,20 @@ struct SampledBoundary {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
 
-// What fills of one hole share: its boundary samples per density and its parameterizations per
-// method and density, each computed on first use. Valid for one set of sampling and
-// parameterization options (a fill with others starts it afresh).
+// What fills of one hole share: its boundary samples per density, its parameterizations per
+// method and density, and the model's pre-existing state, each computed on first use. Valid
+// for one set of sampling and parameterization options (a fill with others starts it afresh).
 struct FillCache {
   std::map<int, SampledBoundary> sampled;                          // by density
   std::map<std::pair<int, int>, Parameterization> parameterized;  // by (method, density); successes only
   BoundarySamplingOptions sampling;
   ParameterizationOptions parameterization;
   int samplings = 0, parameterizations = 0;  // computed so far (not taken from the cache)
+  // The model's pre-existing state (HoleFillResult::invalidBefore), checked once per hole; with
+  // the whole model when checkedWholeModel.
+  std::optional<std::vector<int>> invalidBefore;
+  bool checkedWholeModel = false;
+  int priorChecks = 0;  // times the pre-existing state was checked
 };
 
 // The hole is the loop holding all the given 1-based edge indices (FreeCAD "Edge<k>").

@@ -350,6 +350,7 @@ TEST(HoleFill, PreparedHoleReusesSamplesAndParameterizations) {
   }
   EXPECT_EQ(prepared.cache().samplings, samplings);
   EXPECT_EQ(prepared.cache().parameterizations, parameterizations);
+  EXPECT_EQ(prepared.cache().priorChecks, 1);  // the model's own state is checked once
   EXPECT_EQ(shapeToBrepString(model), before);
   // The last prepared fill (G1, sewn) is fillHole's own, pole for pole.
   o.continuity = Continuity::G1;
