@@ -17,6 +17,7 @@
 
 #include "brep/face_building.h"
 #include "fill/bending_energy.h"
+#include "fill/reachable_normals.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "geometry/tolerances.h"
@@ -425,14 +426,12 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         a.method = a.P.chosen;
         a.parameterizeSeconds = since(ta);
         FillConstraints c;
+        // Normals a surface through the loop's curves can have (chasing the support's own beside
+        // G0 on an inexact edge made the fill ripple; at a tilted corner, spike in curvature).
+        c.normal = reachableNormals(hole, sd.unit);
         for (const auto& x : sd.unit) {
           c.uv.push_back(a.P.uv[c.uv.size()]);
           c.point.push_back(x.point);
-          // The normal a surface through the edge's curve can have that is nearest the support's:
-          // on an inexact edge (its curve not in the support's tangent plane) the support normal
-          // itself is out of reach, and chasing it beside G0 made the fill ripple.
-          const Eigen::Vector3d reachable = x.normal - x.normal.dot(x.tangent) * x.tangent;
-          c.normal.push_back(reachable.norm() > 0.5 ? reachable.normalized() : x.normal);
           c.across.push_back(x.across);
           c.curvature.push_back(x.curvature);
           c.weight.push_back(x.weight);
