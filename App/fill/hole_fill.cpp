@@ -427,8 +427,11 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         a.parameterizeSeconds = since(ta);
         FillConstraints c;
         // Normals a surface through the loop's curves can have (chasing the support's own beside
-        // G0 on an inexact edge made the fill ripple; at a tilted corner, spike in curvature).
-        c.normal = reachableNormals(hole, sd.unit);
+        // G0 on an inexact edge made the fill ripple; at a tilted corner of a G2 edge, spike in
+        // curvature).
+        std::vector<bool> easeCorners;
+        for (const auto& q : r.edgeRequests) easeCorners.push_back(q.asked == Continuity::G2);
+        c.normal = reachableNormals(hole, sd.unit, easeCorners);
         for (const auto& x : sd.unit) {
           c.uv.push_back(a.P.uv[c.uv.size()]);
           c.point.push_back(x.point);

@@ -6,7 +6,8 @@
 
 namespace holefill {
 
-std::vector<Eigen::Vector3d> reachableNormals(const Hole& hole, const std::vector<BoundarySample>& samples) {
+std::vector<Eigen::Vector3d> reachableNormals(const Hole& hole, const std::vector<BoundarySample>& samples,
+                                              const std::vector<bool>& easeCorners) {
   const size_t n = samples.size();
   std::vector<Eigen::Vector3d> aim(n);
   for (size_t i = 0; i < n; ++i) {
@@ -15,7 +16,7 @@ std::vector<Eigen::Vector3d> reachableNormals(const Hole& hole, const std::vecto
     aim[i] = r.norm() > 0.5 ? r.normalized() : x.normal;
   }
   const size_t m = hole.edges.size();
-  if (n == 0 || m < 2) return aim;
+  if (n == 0 || m < 2 || easeCorners.size() != m) return aim;
   // Each edge's run of samples [first, last] and its arc length from the run's start.
   std::vector<long> first(m, -1), last(m, -1);
   std::vector<double> along(n, 0.0);
@@ -36,7 +37,7 @@ std::vector<Eigen::Vector3d> reachableNormals(const Hole& hole, const std::vecto
     if (nc.norm() < std::sin(tol::kCornerAngleDeg * M_PI / 180.0)) continue;  // a cusp: n_c undetermined
     // Both edges' runs, each eased from its corner sample to its middle.
     for (const auto& [edge, corner, atEnd] : {std::tuple{a, endA, true}, std::tuple{b, startB, false}}) {
-      if (!samples[corner].normalValid) continue;
+      if (!easeCorners[edge] || !samples[corner].normalValid) continue;
       const Eigen::Vector3d target = nc.dot(aim[corner]) >= 0 ? nc.normalized() : Eigen::Vector3d(-nc.normalized());
       const Eigen::Vector3d c = target - aim[corner];
       const double half = 0.5 * along[last[edge]];

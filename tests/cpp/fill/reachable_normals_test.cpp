@@ -46,7 +46,7 @@ double angle(const Vector3d& a, const Vector3d& b) { return std::atan2(a.cross(b
 TEST(ReachableNormals, ATiltedCornerIsAimedAtTheCornerNormalAndEasedBackByMidEdge) {
   const double tilt = 2.2e-3;
   const TiltedSquare s = square(tilt);
-  const std::vector<Vector3d> aim = reachableNormals(s.hole, s.samples);
+  const std::vector<Vector3d> aim = reachableNormals(s.hole, s.samples, std::vector<bool>(4, true));
   ASSERT_EQ(aim.size(), s.samples.size());
   // Edge 1 runs from sample 21 (its corner with edge 0) to 41 (its corner with edge 2).
   EXPECT_LT(angle(aim[21], Vector3d::UnitZ()), 1e-12);
@@ -64,12 +64,16 @@ TEST(ReachableNormals, ATiltedCornerIsAimedAtTheCornerNormalAndEasedBackByMidEdg
 TEST(ReachableNormals, AnInexactEdgesNormalLosesItsTangentPart) {
   TiltedSquare s = square(0.0, false);
   s.samples[5].normal = Vector3d(0.1, 0, 1).normalized();  // edge 0 runs along +x
-  const std::vector<Vector3d> aim = reachableNormals(s.hole, s.samples);
+  const std::vector<Vector3d> aim = reachableNormals(s.hole, s.samples, std::vector<bool>(4, true));
   EXPECT_LT(angle(aim[5], Vector3d::UnitZ()), 1e-12);
 }
 
-TEST(ReachableNormals, WithoutTangentBreaksNothingIsEased) {
+TEST(ReachableNormals, WithoutTangentBreaksOrAG2RequestNothingIsEased) {
   const TiltedSquare s = square(2.2e-3, false);
-  const std::vector<Vector3d> aim = reachableNormals(s.hole, s.samples);
+  const std::vector<Vector3d> aim = reachableNormals(s.hole, s.samples, std::vector<bool>(4, true));
   for (size_t i = 0; i < aim.size(); ++i) EXPECT_LT(angle(aim[i], s.samples[i].normal), 1e-12) << i;
+  // Edge 1 asked G1 only: its corners keep the support's tilt (the G1 tolerance is what counts).
+  const TiltedSquare t = square(2.2e-3);
+  const std::vector<Vector3d> g1 = reachableNormals(t.hole, t.samples, {true, false, true, true});
+  for (int i = 21; i <= 41; ++i) EXPECT_LT(angle(g1[i], t.samples[i].normal), 1e-12) << i;
 }
