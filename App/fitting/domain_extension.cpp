@@ -9,6 +9,7 @@
 #include <map>
 
 #include "geometry/error.h"
+#include "geometry/polygon2d.h"
 #include "mesh/mesh_holes.h"
 #include "mesh/mesh_topology.h"
 
@@ -17,10 +18,16 @@ namespace holefill {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+struct VertexId {
+  int id = -1;  // the padded mesh's vertex; -1: not placed by us
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexId, K>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+// Constraints that cross would need constructed intersection points, which an inexact kernel
+// places where CGAL's own predicates then contradict (a SIGSEGV in find_intersected_faces on
+// regions whose map folded at the boundary): crossing constraints throw instead.
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 
 // Winding number of the region's boundary loops around q: nonzero inside the region's footprint.
 int winding(const std::vector<std::vector<Eigen::Vector2d>>& loops, const Eigen::Vector2d& q) {
@@ -98,20 +105,49 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       }
     }
 
-  // Constrained Delaunay triangulation of the boundary loops and the samples.
+  // Constrained Delaunay triangulation of the boundary loops and the samples. The loops must be
+  // simple and apart in the domain: a map that folds at the boundary has them cross, and no
+  // triangulation of the outside exists.
+  for (size_t a = 0; a < loops.size(); ++a) {
+    if (selfIntersects(loops[a]))
+      throw Error("the region's map into the domain folds at its boundary (a boundary loop crosses itself): the extension "
+                  "cannot be built; fit without extension or label the region differently");
+    for (size_t b = a + 1; b < loops.size(); ++b)
+      if (loopsCross(loops[a], loops[b]))
+        throw Error("the region's map into the domain folds at its boundary (two boundary loops cross): the extension "
+                    "cannot be built; fit without extension or label the region differently");
+  }
   CDT cdt;
   std::vector<CDT::Vertex_handle> handle(nv);
-  for (const auto& hole : holes.holes)
-    for (int v : hole.loop) {
-      handle[v] = cdt.insert(CDT::Point(uv(v, 0), uv(v, 1)));
-      handle[v]->info() = v;
+  std::vector<CDT::Vertex_handle> freshHandle(fresh.size());
+  try {
+    for (const auto& hole : holes.holes)
+      for (int v : hole.loop) {
+        handle[v] = cdt.insert(CDT::Point(uv(v, 0), uv(v, 1)));
+        if (handle[v]->info().id >= 0 && handle[v]->info().id != v)
+          throw Error("the region's map into the domain sends two boundary vertices to one point: the extension cannot be built");
+        handle[v]->info().id = v;
+      }
+    for (size_t k = 0; k < fresh.size(); ++k) {
+      freshHandle[k] = cdt.insert(CDT::Point(fresh[k].x(), fresh[k].y()));
+      if (freshHandle[k]->info().id >= 0) throw Error("the extension met a point twice: the region's parameterization overlaps itself");
+      freshHandle[k]->info().id = nv + static_cast<int>(k);
     }
-  for (size_t k = 0; k < fresh.size(); ++k) {
-    auto vh = cdt.insert(CDT::Point(fresh[k].x(), fresh[k].y()));
-    vh->info() = nv + static_cast<int>(k);
+    for (const auto& hole : holes.holes)
+      for (size_t k = 0; k < hole.loop.size(); ++k)
+        cdt.insert_constraint(handle[hole.loop[k]], handle[hole.loop[(k + 1) % hole.loop.size()]]);
+  } catch (const CDT::Intersection_of_constraints_exception&) {
+    throw Error("the region's map into the domain folds at its boundary (boundary edges cross): the extension cannot be "
+                "built; fit without extension or label the region differently");
   }
-  for (const auto& hole : holes.holes)
-    for (size_t k = 0; k < hole.loop.size(); ++k) cdt.insert_constraint(handle[hole.loop[k]], handle[hole.loop[(k + 1) % hole.loop.size()]]);
+  // Every vertex is one of ours, at its own place (no constraint was split at a new point).
+  for (auto it = cdt.finite_vertices_begin(); it != cdt.finite_vertices_end(); ++it) {
+    const CDT::Vertex_handle v = it;
+    const int i = v->info().id;
+    const bool ours = i >= 0 && ((i < nv && handle[i] == v) || (i >= nv && i - nv < static_cast<int>(fresh.size()) &&
+                                                                  freshHandle[i - nv] == v));
+    if (!ours) throw Error("the extension's triangulation met a point it did not place: the region's parameterization overlaps itself");
+  }
 
   TriangleMesh padded;
   padded.vertices.resize(nv + static_cast<Eigen::Index>(fresh.size()), 3);
@@ -124,7 +160,7 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     int id[3];
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (int k = 0; k < 3; ++k) {
-      id[k] = f->vertex(k)->info();
+      id[k] = f->vertex(k)->info().id;
       if (id[k] < 0) throw Error("the extension met a point twice: the region's parameterization overlaps itself");
       c += puv.row(id[k]).transpose() / 3;
     }

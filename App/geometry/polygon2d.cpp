@@ -59,6 +59,15 @@ bool selfIntersects(const Polygon2& p) {
   return false;
 }
 
+bool loopsCross(const Polygon2& p, const Polygon2& q) {
+  for (size_t i = 0; i < p.size(); ++i) {
+    const auto &a = p[i], &b = p[(i + 1) % p.size()];
+    for (size_t j = 0; j < q.size(); ++j)
+      if (segmentsCross(a, b, q[j], q[(j + 1) % q.size()])) return true;
+  }
+  return false;
+}
+
 Eigen::VectorXd meanValueCoordinates(const Polygon2& p, const Eigen::Vector2d& x) {
   const size_t n = p.size();
   Eigen::VectorXd w = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));

@@ -16,6 +16,8 @@ double signedArea(const Polygon2& poly);  // > 0 for counter-clockwise
 bool contains(const Polygon2& poly, const Eigen::Vector2d& x);  // even-odd rule
 // True when two non-adjacent edges intersect; zero-length edges are skipped.
 bool selfIntersects(const Polygon2& poly);
+// True when an edge of one polygon crosses an edge of the other.
+bool loopsCross(const Polygon2& p, const Polygon2& q);
 // Mean value coordinates of x (strictly inside) w.r.t. the polygon vertices; they sum to 1.
 Eigen::VectorXd meanValueCoordinates(const Polygon2& poly, const Eigen::Vector2d& x);
 

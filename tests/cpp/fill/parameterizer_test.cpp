@@ -115,3 +115,10 @@ TEST(Parameterizer, DegenerateLoopIsAClearError) {
     }
   EXPECT_THROW(parameterize(hole, s, ParamMethod::NearestPlane), Error);
 }
+
+TEST(Polygon2d, LoopsCross) {
+  const Polygon2 square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  EXPECT_FALSE(loopsCross(square, Polygon2{{0.5, 0.5}, {1.5, 0.5}, {1, 1.5}}));  // inside, apart
+  EXPECT_FALSE(loopsCross(square, Polygon2{{3, 0}, {4, 0}, {4, 1}}));           // outside, apart
+  EXPECT_TRUE(loopsCross(square, Polygon2{{1, 1}, {3, 1}, {3, 1.5}}));          // through the east side
+}

@@ -128,3 +128,32 @@ TEST(DomainExtension, MeshFairnessEvensOutTheDistortionOfNeighbouringTriangles) 
   EXPECT_TRUE(e.mesh.vertices.allFinite());
   EXPECT_LT(with, 0.9 * without);
 }
+
+// Issue 21: a region whose map into the domain folds at its boundary (the boundary loop crosses
+// itself, or two of its vertices land on one point) crashed the process inside CGAL's constrained
+// triangulation; it is now a clear error that names the fold, and nothing else is attempted.
+TEST(DomainExtension, AMapThatFoldsAtTheBoundaryIsAClearErrorNotACrash) {
+  Eigen::MatrixX2d uv;
+  const TriangleMesh region = ellipseRegion([](double, double) { return 0.0; }, uv);
+  // The boundary vertex furthest to the east is pulled across the region to the west side.
+  Eigen::Index east = 0;
+  uv.col(0).maxCoeff(&east);
+  Eigen::MatrixX2d crossed = uv;
+  crossed(east, 0) = -0.5;
+  try {
+    extendToRectangle(region, crossed, 4, 2);
+    FAIL() << "a folded map was extended";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("folds at its boundary"), std::string::npos) << e.what();
+  }
+  // Two boundary vertices on one point.
+  Eigen::Index west = 0;
+  uv.col(0).minCoeff(&west);
+  Eigen::MatrixX2d merged = uv;
+  Eigen::Index other = -1;
+  for (Eigen::Index v = 0; v < uv.rows() && other < 0; ++v)
+    if (v != west && std::abs(uv(v, 0) - uv(west, 0)) < 0.3 && std::abs(uv(v, 1) - uv(west, 1)) < 0.3) other = v;
+  ASSERT_GE(other, 0);
+  merged.row(other) = merged.row(west);
+  EXPECT_THROW(extendToRectangle(region, merged, 4, 2), Error);
+}

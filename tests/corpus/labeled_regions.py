@@ -1,0 +1,289 @@
+#!/usr/bin/env python3
+"""Corpus of labeled trimmed regions for labeled fitting (issue 21): regions nobody here shaped to
+the method, cut from known surfaces, meshed irregularly, with noise, in both orientations.
+
+Each region is a shape in the unit parameter square (a convex blob, an L, a U-slot, a notch, a
+crescent, a square with a corner bitten off by a concave arc, a 10:1 strip, a square with an inner
+hole) mapped onto a surface (plane, cylinder, cone, sphere, torus, saddle, Gaussian bumps, a random
+B-spline height field) and triangulated irregularly (Delaunay of jittered interior points and
+boundary points at the same spacing), with 2,000 to 20,000 vertices. Noise is Gaussian, 0, 0.05%
+or 0.2% of the region's diagonal; half the regions have their triangles turned clockwise seen from
+the surface normal. Labels follow one rule (issue 21): the four corners are the outer boundary
+vertices nearest the corners of the region's bounding box in the true parameters; S runs from SW
+to SE, E from SE to NE, N from NE to NW, W from NW to SW along the anticlockwise loop.
+
+Per region, in OUT/<id>/: region.obj, labels.json, band.xyz (points of the true surface in the band
+around the region: the rest of its bounding rectangle grown by 10%, for the band deviation) and
+truth.xyz (noise-free positions of the region's vertices). The index (id, surface, shape, noise,
+orientation, vertex count, diagonal) goes to tests/corpus/labeled_regions_index.json.
+
+  python3 tests/corpus/labeled_regions.py OUT [--index tests/corpus/labeled_regions_index.json]
+Deterministic: one seed per region, from its position in the list.
+"""
+import json
+import math
+import os
+import sys
+
+import numpy as np
+from scipy.interpolate import RectBivariateSpline
+from scipy.spatial import Delaunay
+
+# --- surfaces: (u, v) in [0, 1]^2 -> R^3, about 10 units across -------------------------------
+
+
+def bspline_field(seed):
+    rng = np.random.default_rng(1000 + seed)
+    knots = np.linspace(0, 1, 7)
+    heights = rng.normal(0, 1.2, (7, 7))
+    spline = RectBivariateSpline(knots, knots, heights, kx=3, ky=3)
+    return lambda u, v: np.stack([10 * u, 10 * v, spline.ev(u, v)], -1)
+
+
+SURFACES = {
+    "plane": lambda u, v: np.stack([10 * u, 10 * v * 0.8, 0.3 * (10 * u) + 0.1 * (10 * v)], -1),
+    "cylinder": lambda u, v: np.stack([3 * np.cos(np.pi * u), 3 * np.sin(np.pi * u), 10 * v], -1),
+    "cone": lambda u, v: np.stack([(1 + 3 * v) * np.cos(1.2 * np.pi * u), (1 + 3 * v) * np.sin(1.2 * np.pi * u), 8 * v], -1),
+    "sphere": lambda u, v: np.stack([5 * np.cos(1.2 * (v - .5)) * np.cos(1.6 * (u - .5)),
+                                     5 * np.cos(1.2 * (v - .5)) * np.sin(1.6 * (u - .5)), 5 * np.sin(1.2 * (v - .5))], -1),
+    "torus": lambda u, v: np.stack([(6 + 2 * np.cos(2.5 * (v - .5))) * np.cos(1.5 * (u - .5)),
+                                    (6 + 2 * np.cos(2.5 * (v - .5))) * np.sin(1.5 * (u - .5)), 2 * np.sin(2.5 * (v - .5))], -1),
+    "saddle": lambda u, v: np.stack([10 * u, 10 * v, 8 * ((u - .5) ** 2 - (v - .5) ** 2)], -1),
+    "bumps": lambda u, v: np.stack([10 * u, 10 * v, 1.5 * np.exp(-((u - .3) ** 2 + (v - .4) ** 2) / .02)
+                                    - 1.0 * np.exp(-((u - .7) ** 2 + (v - .6) ** 2) / .03)
+                                    + 0.8 * np.exp(-((u - .5) ** 2 + (v - .85) ** 2) / .01)], -1),
+    "bspline": None,  # per region, seeded
+}
+
+# --- shapes: outer loop (anticlockwise) and inner loops (clockwise), in [0, 1]^2 ---------------
+
+
+def circle(cx, cy, r, n=256, start=0.0, stop=2 * np.pi):
+    t = np.linspace(start, stop, n, endpoint=False)
+    return np.stack([cx + r * np.cos(t), cy + r * np.sin(t)], -1)
+
+
+def arc(cx, cy, r, a0, a1, n):
+    t = np.linspace(a0, a1, n)
+    return np.stack([cx + r * np.cos(t), cy + r * np.sin(t)], -1)
+
+
+def shape(name):
+    sq = np.array([[.1, .1], [.9, .1], [.9, .9], [.1, .9]])
+    if name == "blob":
+        t = np.linspace(0, 2 * np.pi, 256, endpoint=False)
+        r = 0.38 + 0.05 * np.sin(3 * t) + 0.02 * np.cos(5 * t)
+        return np.stack([.5 + r * np.cos(t), .5 + r * np.sin(t)], -1), []
+    if name == "lshape":
+        return np.array([[.1, .1], [.9, .1], [.9, .5], [.5, .5], [.5, .9], [.1, .9]]), []
+    if name == "uslot":
+        return np.array([[.1, .1], [.9, .1], [.9, .9], [.6, .9], [.6, .3], [.4, .3], [.4, .9], [.1, .9]]), []
+    if name == "notch":
+        return np.array([[.1, .1], [.9, .1], [.9, .4], [.55, .5], [.9, .6], [.9, .9], [.1, .9]]), []
+    if name == "crescent":
+        # the disk of radius .4 at (.5, .5) less the disk of radius .3 at (.7, .5): a C open towards +u.
+        # The circles cross at angle 0.812 of the first and 1.318 of the second.
+        a1, a2 = math.atan2(0.2905, 0.275), math.atan2(0.2905, 0.075)
+        outer = arc(.5, .5, .4, a1, 2 * np.pi - a1, 200)
+        inner = arc(.7, .5, .3, 2 * np.pi - a2, a2, 140)[1:-1]  # clockwise, through its leftmost point
+        return np.vstack([outer, inner]), []
+    if name == "corner":
+        bite = arc(.9, .9, .45, -0.5 * np.pi, -np.pi, 80)  # concave: from (.9, .45) round to (.45, .9)
+        return np.vstack([[[.1, .1], [.9, .1]], bite, [[.1, .9]]]), []
+    if name == "strip":
+        return np.array([[.05, .455], [.95, .455], [.95, .545], [.05, .545]]), []
+    if name == "ring":
+        return sq, [circle(.5, .5, .15, 96)[::-1]]
+    raise ValueError(name)
+
+
+SHAPES = ["blob", "lshape", "uslot", "notch", "crescent", "corner", "strip", "ring"]
+NOISE = [0.0, 5e-4, 2e-3]
+SIZES = [2000, 5000, 10000, 20000]
+
+
+def inside(loops, pts):
+    """Even-odd containment of pts (n, 2) in the union of loops."""
+    res = np.zeros(len(pts), bool)
+    x, y = pts[:, 0], pts[:, 1]
+    for loop in loops:
+        a, b = loop, np.roll(loop, -1, 0)
+        for (x0, y0), (x1, y1) in zip(a, b):
+            cross = ((y0 > y) != (y1 > y)) & (x < (x1 - x0) * (y - y0) / (y1 - y0 + 1e-300) + x0)
+            res ^= cross
+    return res
+
+
+def seg_dist(pts, loops):
+    d = np.full(len(pts), np.inf)
+    for loop in loops:
+        a, b = loop, np.roll(loop, -1, 0)
+        for p0, p1 in zip(a, b):
+            e = p1 - p0
+            t = np.clip(((pts - p0) @ e) / max(e @ e, 1e-300), 0, 1)
+            d = np.minimum(d, np.linalg.norm(pts - (p0 + t[:, None] * e), axis=1))
+    return d
+
+
+def resample(loop, h):
+    out = []
+    for p0, p1 in zip(loop, np.roll(loop, -1, 0)):
+        n = max(1, int(math.ceil(np.linalg.norm(p1 - p0) / h)))
+        for k in range(n):
+            out.append(p0 + (p1 - p0) * k / n)
+    return np.array(out)
+
+
+def area(loop):
+    x, y = loop[:, 0], loop[:, 1]
+    return 0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)
+
+
+def boundary_loops(tris):
+    """Directed boundary edges of an oriented triangle list, chained into loops."""
+    edges = {}
+    for t in tris:
+        for k in range(3):
+            a, b = int(t[k]), int(t[(k + 1) % 3])
+            edges[(a, b)] = edges.get((a, b), 0) + 1
+    nxt = {}
+    for (a, b) in edges:
+        if (b, a) not in edges:
+            if a in nxt:
+                return None  # a vertex on two boundary stretches: not a manifold boundary
+            nxt[a] = b
+    loops, seen = [], set()
+    for s in nxt:
+        if s in seen:
+            continue
+        loop, v = [], s
+        while v not in seen:
+            seen.add(v)
+            loop.append(v)
+            v = nxt.get(v)
+            if v is None:
+                return None
+        loops.append(loop)
+    return loops
+
+
+def make_region(idx, surface, shape_name, noise, clockwise, target):
+    rng = np.random.default_rng(idx)
+    outer, inners = shape(shape_name)
+    loops = [outer] + inners
+    a = abs(area(outer)) - sum(abs(area(l)) for l in inners)
+    h = math.sqrt(a / target * 1.15)  # about `target` vertices (a triangle mesh has ~2 triangles per vertex)
+    bnd = [resample(l, h) for l in loops]
+    gx = np.arange(0, 1 + h, h)
+    g = np.stack(np.meshgrid(gx, np.arange(0, 1 + h, h * math.sqrt(3) / 2)), -1).reshape(-1, 2)
+    g[:, 0] += (np.round(g[:, 1] / (h * math.sqrt(3) / 2)) % 2) * h / 2
+    g += rng.uniform(-0.3 * h, 0.3 * h, g.shape)  # irregular
+    g = g[inside(loops, g) & (seg_dist(g, loops) > 0.6 * h)]
+    pts = np.vstack(bnd + [g])
+    tri = Delaunay(pts).simplices
+    c = pts[tri].mean(1)
+    tri = tri[inside(loops, c)]
+    # orient anticlockwise in (u, v)
+    p0, p1, p2 = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    sgn = (p1[:, 0] - p0[:, 0]) * (p2[:, 1] - p0[:, 1]) - (p1[:, 1] - p0[:, 1]) * (p2[:, 0] - p0[:, 0])
+    tri = tri[sgn > 1e-14 * h * h]
+    used = np.unique(tri)
+    remap = -np.ones(len(pts), int)
+    remap[used] = np.arange(len(used))
+    uv, tri = pts[used], remap[tri]
+    f = bspline_field(idx) if surface == "bspline" else SURFACES[surface]
+    xyz = f(uv[:, 0], uv[:, 1])
+    # The surface's normal side: the map's Jacobian orientation decides which way "anticlockwise in uv" faces.
+    lo, hi = xyz.min(0), xyz.max(0)
+    diag = float(np.linalg.norm(hi - lo))
+    noisy = xyz + rng.normal(0, noise * diag, xyz.shape) if noise > 0 else xyz
+    loops_v = boundary_loops(tri)
+    if loops_v is None or len(loops_v) != 1 + len(inners):
+        return None
+    # the outer loop: the one with the largest |area| in uv; anticlockwise since triangles are
+    outer_loop = max(loops_v, key=lambda l: abs(area(uv[l])))
+    # labels by the rule: corners nearest the bbox corners of the region's true parameters
+    ul, vl = uv[:, 0].min(), uv[:, 1].min()
+    uh, vh = uv[:, 0].max(), uv[:, 1].max()
+    ring = np.array(outer_loop)
+    def nearest(q):
+        return int(np.argmin(np.linalg.norm(uv[ring] - np.array(q), axis=1)))
+    sw, se, ne, nw = nearest((ul, vl)), nearest((uh, vl)), nearest((uh, vh)), nearest((ul, vh))
+    if len({sw, se, ne, nw}) < 4:
+        return None
+    def run(i, j):
+        out = [int(ring[i])]
+        while i != j:
+            i = (i + 1) % len(ring)
+            out.append(int(ring[i]))
+        return out
+    segments = [{"label": "S", "vertices": run(sw, se)}, {"label": "E", "vertices": run(se, ne)},
+                {"label": "N", "vertices": run(ne, nw)}, {"label": "W", "vertices": run(nw, sw)}]
+    if clockwise:
+        tri = tri[:, ::-1]
+    # band: the true surface over the region's parameter bbox grown by 10%, outside the region
+    du, dv = 0.1 * (uh - ul), 0.1 * (vh - vl)
+    bu = np.linspace(ul - du, uh + du, 60)
+    bv = np.linspace(vl - dv, vh + dv, 60)
+    bq = np.stack(np.meshgrid(bu, bv), -1).reshape(-1, 2)
+    bq = bq[~inside(loops, bq) & (seg_dist(bq, loops) > 2 * h)]
+    band = f(bq[:, 0], bq[:, 1])
+    return {"uv": uv, "xyz": noisy, "truth": xyz, "tri": tri, "segments": segments, "band": band, "diag": diag}
+
+
+def regions():
+    """The corpus's list: every surface with every shape, noise and size cycling, orientation alternating."""
+    out = []
+    names = list(SURFACES)
+    for si, s in enumerate(names):
+        for hi, sh in enumerate(SHAPES):
+            k = si * len(SHAPES) + hi
+            out.append((k, s, sh, NOISE[(si + hi) % 3], (si + hi) % 2 == 1, SIZES[(si * 3 + hi) % 4]))
+    return out
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__)
+        return 2
+    out_dir = sys.argv[1]
+    index_path = None
+    if "--index" in sys.argv:
+        index_path = sys.argv[sys.argv.index("--index") + 1]
+    index = []
+    for k, s, sh, noise, cw, size in regions():
+        rid = "%s_%s_%s%s" % (s, sh, ("n%g" % (noise * 100)).replace(".", "p") if noise else "clean", "_cw" if cw else "")
+        r = None
+        for attempt in range(12):  # a Delaunay that left a pinched boundary: jitter again
+            r = make_region(k * 10 + attempt, s, sh, noise, cw, size)
+            if r is not None:
+                break
+        if r is None:
+            print("skipped %s: no manifold region" % rid, file=sys.stderr)
+            continue
+        d = os.path.join(out_dir, rid)
+        os.makedirs(d, exist_ok=True)
+        with open(os.path.join(d, "region.obj"), "w") as f:
+            f.write("# labeled region %s: %s surface, %s shape, noise %g of the diagonal, %s\n"
+                    % (rid, s, sh, noise, "clockwise" if cw else "anticlockwise"))
+            for p in r["xyz"]:
+                f.write("v %.10g %.10g %.10g\n" % tuple(p))
+            for t in r["tri"]:
+                f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
+        with open(os.path.join(d, "labels.json"), "w") as f:
+            json.dump({"segments": r["segments"]}, f)
+        np.savetxt(os.path.join(d, "band.xyz"), r["band"], fmt="%.10g")
+        np.savetxt(os.path.join(d, "truth.xyz"), r["truth"], fmt="%.10g")
+        index.append({"id": rid, "surface": s, "shape": sh, "noise": noise, "clockwise": cw,
+                      "vertices": int(len(r["xyz"])), "triangles": int(len(r["tri"])), "diagonal": round(r["diag"], 6),
+                      "band_points": int(len(r["band"]))})
+    if index_path:
+        with open(index_path, "w") as f:
+            json.dump({"generator": "tests/corpus/labeled_regions.py", "regions": index}, f, indent=1)
+            f.write("\n")
+    print("%d regions in %s" % (len(index), out_dir))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
