@@ -54,8 +54,24 @@ double signedArea(const Eigen::MatrixX2d& uv, const Eigen::Vector3i& t) {
 
 }  // namespace
 
+namespace {
+
+LabeledParameterization parameterizeOriented(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
+                                             const LabeledParameterizationOptions& o, bool mayTurn);
+
+}  // namespace
+
 LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
                                             const LabeledParameterizationOptions& o) {
+  return parameterizeOriented(region, segments, o, true);
+}
+
+namespace {
+
+// mayTurn: when the labels run S, E, N, W clockwise along the triangles' own orientation, the
+// region is read from its other side (its triangles turned), once.
+LabeledParameterization parameterizeOriented(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
+                                             const LabeledParameterizationOptions& o, bool mayTurn) {
   validateMesh(region, "region");
   const int nv = static_cast<int>(region.vertices.rows()), nt = static_cast<int>(region.triangles.rows());
   if (nt < 2) throw Error("the region has " + std::to_string(nt) + " triangle" + (nt == 1 ? "" : "s") + "; fitting needs a region of several");
@@ -122,7 +138,23 @@ LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const st
     const int a = spans[order[k]].second, b = spans[order[(k + 1) % order.size()]].second;
     descents += b < a ? 1 : 0;
   }
-  if (descents > 1) throw Error("the labels are out of order: going anticlockwise around the region they must run South, East, North, West");
+  if (descents > 1) {
+    int ascents = 0;
+    for (size_t k = 0; k < order.size(); ++k)
+      ascents += spans[order[(k + 1) % order.size()]].second > spans[order[k]].second ? 1 : 0;
+    // The labels run S, E, N, W the other way round: the triangles face away from the side the
+    // labels were given on (a scan's faces often do). The region is the same seen from its other
+    // side, and so is the surface fitted to it.
+    if (mayTurn && ascents <= 1) {
+      TriangleMesh turned = region;
+      turned.triangles.col(1).swap(turned.triangles.col(2));
+      LabeledParameterization r = parameterizeOriented(turned, segments, o, false);
+      r.warnings.insert(r.warnings.begin(), "the labels run South, East, North, West clockwise along the region's triangles: "
+                                            "the region is read from its other side");
+      return r;
+    }
+    throw Error("the labels are out of order: going anticlockwise around the region they must run South, East, North, West");
+  }
 
   // The guiding frame over the labeled points, each side's segments in running order.
   LabeledSides sides;
@@ -338,5 +370,7 @@ LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const st
   out.height = kept * H;
   return out;
 }
+
+}  // namespace
 
 }  // namespace holefill

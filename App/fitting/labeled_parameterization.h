@@ -4,7 +4,9 @@
 // labeled vertex belongs and the rectangle's proportions; local–global As-Rigid-As-Possible
 // mapping (Liu et al. 2008) then flattens the region with every labeled vertex held on its side
 // at the frame's position, only the rectangle's overall scale left to the optimisation.
-// Unlabeled boundary vertices and inner holes are free. The start is Tutte's embedding with the
+// Unlabeled boundary vertices and inner holes are free. Labels that run S, E, N, W clockwise
+// along the triangles mean the region was labeled from its other side: it is read from there
+// (the same map). The start is Tutte's embedding with the
 // perimeter on the rectangle (unlabeled stretches spread along its sides by arc length), which
 // cannot fold; triangles that ARAP turns over are counted and, when there are any, the result
 // falls back to the last iterate without them.

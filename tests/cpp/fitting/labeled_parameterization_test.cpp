@@ -132,6 +132,34 @@ TEST(LabeledParameterization, DegenerateRegionsAndLabelsAreRefused) {
   EXPECT_NE(message({{Side::South, {0, 2}}, all[2]}).find("not consecutive"), std::string::npos);
   EXPECT_NE(message({{Side::North, {0, 1, 2}}, {Side::South, {1, 2, 3}}}).find("labeled both"), std::string::npos);
   EXPECT_NE(message({all[0]}).find("at least two"), std::string::npos);
-  EXPECT_NE(message({all[0], {Side::North, all[1].vertices}, {Side::East, all[2].vertices}}).find("out of order"), std::string::npos);
+  // Three sides in any cyclic order run S, E, N one way round or the other (the region read from
+  // its other side); four that alternate (S, N, E, W anticlockwise) run neither way.
+  EXPECT_EQ(message({all[0], {Side::North, all[1].vertices}, {Side::East, all[2].vertices}}), "accepted");
+  EXPECT_NE(message({all[0], {Side::North, all[1].vertices}, {Side::East, all[2].vertices}, all[3]}).find("out of order"),
+            std::string::npos);
   EXPECT_EQ(message(all), "accepted");
+}
+
+// Issue 21, any orientation: a region whose triangles run clockwise seen from the side its labels
+// were given on (the labels then run S, E, N, W clockwise along the triangles) is read from its
+// other side and gets the same map; labels that are out of order both ways are still refused.
+TEST(LabeledParameterization, AClockwiseRegionGetsTheSameMap) {
+  const int nx = 10, ny = 6;
+  const TriangleMesh curved =
+      grid(nx, ny, 0.5, [](double x, double y) { return Eigen::Vector3d(x, y, 0.2 * std::sin(0.6 * x) * std::cos(0.5 * y)); });
+  TriangleMesh turned = curved;
+  turned.triangles.col(1).swap(turned.triangles.col(2));
+  const auto labels = sides(nx, ny, {Side::South, Side::East, Side::North, Side::West});
+  const LabeledParameterization a = parameterizeLabeled(curved, labels), b = parameterizeLabeled(turned, labels);
+  EXPECT_NEAR(a.width, b.width, 1e-9);
+  EXPECT_NEAR(a.height, b.height, 1e-9);
+  EXPECT_LT((a.uv - b.uv).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_EQ(b.flippedTriangles, 0);
+  ASSERT_FALSE(b.warnings.empty());
+  EXPECT_NE(b.warnings.front().find("other side"), std::string::npos);
+  // The east side labeled North and the north side East: S, N, E, W, out of order whichever way round.
+  auto alternating = labels;
+  std::swap(alternating[1].side, alternating[2].side);
+  EXPECT_THROW(parameterizeLabeled(turned, alternating), Error);
+  EXPECT_THROW(parameterizeLabeled(curved, alternating), Error);
 }
