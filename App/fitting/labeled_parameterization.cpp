@@ -190,6 +190,34 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
   std::vector<int> slide(L, -1);   // the coordinate a labeled vertex off the corners slides along (0: u, 1: v)
   for (int side = 0; side < 4; ++side)
     for (int i : sidePerimeter[side]) sidesAt[i] |= 1 << side;
+  // Where each labeled vertex lies along its side: the arc length of its projection on the frame
+  // curve (not the Bezier parameter: a degree-raised curve runs at uneven speed, measured: a
+  // straight side's point 60% along sat at parameter 0.73, which would stretch the map). Where
+  // the projections do not follow the side's own order (a concave stretch, a notch or slot the
+  // frame's curve passes by), they would send vertices onto one point or back over each other,
+  // and the map folds at its boundary: that side's vertices are then placed by their arc length
+  // along the labeled boundary itself, between its first and last projections.
+  std::array<std::vector<double>, 4> along;
+  for (int side = 0; side < 4; ++side) {
+    const auto& sp = sidePerimeter[side];
+    if (sp.empty()) continue;
+    std::vector<double>& t = along[side];
+    for (size_t j = 0; j < sp.size(); ++j)
+      t.push_back(curveLength(f, static_cast<Side>(side), f.parameters[side][j]) / curveLength(f, static_cast<Side>(side)));
+    // Corners sit at the side's ends whatever their projection.
+    if ((sidesAt[sp.front()] & ~(1 << side)) != 0) t.front() = 0;
+    if ((sidesAt[sp.back()] & ~(1 << side)) != 0) t.back() = 1;
+    const double minStep = 1e-3 / static_cast<double>(sp.size());
+    bool ordered = true;
+    for (size_t j = 1; j < t.size() && ordered; ++j) ordered = t[j] - t[j - 1] > minStep;
+    if (ordered) continue;
+    const double t0 = t.front() < t.back() ? t.front() : 0, t1 = t.front() < t.back() ? t.back() : 1;
+    std::vector<double> arc(sp.size(), 0.0);
+    for (size_t j = 1; j < sp.size(); ++j) arc[j] = arc[j - 1] + (region.vertices.row(loop[sp[j]]) - region.vertices.row(loop[sp[j - 1]])).norm();
+    for (size_t j = 0; j < sp.size(); ++j) t[j] = t0 + (t1 - t0) * arc[j] / std::max(arc.back(), 1e-300);
+    out.warnings.push_back(std::string("the ") + sideName(static_cast<Side>(side)) +
+                           " side's vertices do not follow its frame curve in order (a concave stretch): placed by arc length");
+  }
   for (int side = 0; side < 4; ++side)
     for (size_t j = 0; j < sidePerimeter[side].size(); ++j) {
       const int i = sidePerimeter[side][j];
@@ -207,9 +235,7 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
         fixed[i] = true;
         continue;
       }
-      // Arc length, not the Bézier parameter: a degree-raised curve runs at uneven speed (measured:
-      // a straight side's point 60% along sat at parameter 0.73), which would stretch the map.
-      const double t = curveLength(f, static_cast<Side>(side), f.parameters[side][j]) / curveLength(f, static_cast<Side>(side));
+      const double t = along[side][j];
       static const auto place = [](int s, double t, double W, double H) -> Eigen::Vector2d {
         switch (s) {
           case 0: return {t * W, 0};
