@@ -4,6 +4,9 @@
 
 #include "fitting/labeled_parameterization.h"
 #include "geometry/error.h"
+#include "geometry/polygon2d.h"
+#include "mesh/mesh_holes.h"
+#include "test_regions.h"
 
 using namespace holefill;
 
@@ -162,4 +165,48 @@ TEST(LabeledParameterization, AClockwiseRegionGetsTheSameMap) {
   std::swap(alternating[1].side, alternating[2].side);
   EXPECT_THROW(parameterizeLabeled(turned, alternating), Error);
   EXPECT_THROW(parameterizeLabeled(curved, alternating), Error);
+}
+
+// Issue 21, concave regions: an L-shape and a U-slot labeled by the corpus's rule (corners at the
+// boundary vertices nearest the corners of the bounding box, so the N and E sides run round the
+// notch) sent vertices whose frame projections ran backwards onto one point and folded the map at
+// its boundary. Now every boundary loop is a simple polygon in the domain with distinct vertices.
+TEST(LabeledParameterization, ConcaveLShapeAndUSlotKeepASimpleBoundary) {
+  struct Case {
+    const char* name;
+    std::function<bool(double, double)> inside;
+  };
+  for (const Case& c : {Case{"L-shape", [](double x, double y) { return x < 2.5 || y < 1.5; }},
+                        Case{"U-slot", [](double x, double y) { return !(x > 1.75 && x < 3.25 && y > 1.0); }}}) {
+    SCOPED_TRACE(c.name);
+    Eigen::MatrixX2d truth;
+    const TriangleMesh region = testregions::gridRegion(
+        20, 12, 0.25, c.inside, [](double x, double y) { return Eigen::Vector3d(x, y, 0.3 * std::sin(0.8 * x) + 0.1 * y * y); }, truth);
+    const MeshHoleReport holes = findMeshHoles(region);
+    ASSERT_EQ(holes.holes.size(), 1u);
+    const std::vector<int>& loop = holes.holes[0].loop;  // anticlockwise, as the triangles run
+    const Eigen::Vector2d lo = truth.colwise().minCoeff().transpose(), hi = truth.colwise().maxCoeff().transpose();
+    auto nearest = [&](double u, double v) {
+      size_t best = 0;
+      for (size_t k = 0; k < loop.size(); ++k)
+        if ((truth.row(loop[k]).transpose() - Eigen::Vector2d(u, v)).norm() < (truth.row(loop[best]).transpose() - Eigen::Vector2d(u, v)).norm()) best = k;
+      return best;
+    };
+    const size_t corner[4] = {nearest(lo.x(), lo.y()), nearest(hi.x(), lo.y()), nearest(hi.x(), hi.y()), nearest(lo.x(), hi.y())};
+    std::vector<LabeledSegment> labels;
+    for (int side = 0; side < 4; ++side) {
+      LabeledSegment seg{static_cast<Side>(side), {}};
+      for (size_t k = corner[side];; k = (k + 1) % loop.size()) {
+        seg.vertices.push_back(loop[k]);
+        if (k == corner[(side + 1) % 4]) break;
+      }
+      labels.push_back(seg);
+    }
+    const LabeledParameterization p = parameterizeLabeled(region, labels);
+    Polygon2 boundary;
+    for (int v : p.perimeter) boundary.push_back(p.uv.row(v).transpose());
+    EXPECT_FALSE(selfIntersects(boundary));
+    for (size_t k = 0; k < boundary.size(); ++k)
+      EXPECT_GT((boundary[k] - boundary[(k + 1) % boundary.size()]).norm(), 1e-9) << "vertices " << k << " and " << k + 1 << " coincide";
+  }
 }
