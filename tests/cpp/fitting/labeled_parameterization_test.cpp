@@ -167,21 +167,24 @@ TEST(LabeledParameterization, AClockwiseRegionGetsTheSameMap) {
   EXPECT_THROW(parameterizeLabeled(curved, alternating), Error);
 }
 
-// Issue 21, concave regions: an L-shape and a U-slot labeled by the corpus's rule (corners at the
+// Issue 21, concave regions: an L-shape, a U-slot and a corner bitten off by an arc, labeled by the corpus's rule (corners at the
 // boundary vertices nearest the corners of the bounding box, so the N and E sides run round the
 // notch) sent vertices whose frame projections ran backwards onto one point and folded the map at
 // its boundary. Now every boundary loop is a simple polygon in the domain with distinct vertices.
-TEST(LabeledParameterization, ConcaveLShapeAndUSlotKeepASimpleBoundary) {
+TEST(LabeledParameterization, ConcaveLShapeUSlotAndBittenCornerKeepASimpleBoundary) {
   struct Case {
     const char* name;
     std::function<bool(double, double)> inside;
   };
-  for (const Case& c : {Case{"L-shape", [](double x, double y) { return x < 2.5 || y < 1.5; }},
-                        Case{"U-slot", [](double x, double y) { return !(x > 1.75 && x < 3.25 && y > 1.0); }}}) {
+  // On a half cylinder (u around, v along), cells of 0.04 over [0, 1]^2.
+  for (const Case& c : {Case{"L-shape", [](double x, double y) { return x < 0.5 || y < 0.5; }},
+                        Case{"U-slot", [](double x, double y) { return !(x > 0.35 && x < 0.65 && y > 0.3); }},
+                        Case{"bitten corner", [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }}}) {
     SCOPED_TRACE(c.name);
     Eigen::MatrixX2d truth;
     const TriangleMesh region = testregions::gridRegion(
-        20, 12, 0.25, c.inside, [](double x, double y) { return Eigen::Vector3d(x, y, 0.3 * std::sin(0.8 * x) + 0.1 * y * y); }, truth);
+        25, 25, 0.04, c.inside,
+        [](double x, double y) { return Eigen::Vector3d(3 * std::cos(M_PI * x), 3 * std::sin(M_PI * x), 10 * y); }, truth);
     const MeshHoleReport holes = findMeshHoles(region);
     ASSERT_EQ(holes.holes.size(), 1u);
     const std::vector<int>& loop = holes.holes[0].loop;  // anticlockwise, as the triangles run
