@@ -182,10 +182,20 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   // bicubics on the grid.
   const int N = static_cast<int>(padded.vertices.rows()), nNew = N - nv;
   if (nNew > 0) {
+    // Triangles the map flattened (three boundary vertices on one side of the rectangle; a
+    // sliver the flattening squeezed to nothing) have no cotangents and no area: left out of the
+    // Laplacian, whose weights they made infinite (27 of the corpus's 63 regions stopped on a
+    // "singular" system whose entries were inf).
+    std::vector<char> flat(padded.triangles.rows(), 0);
+    for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t) {
+      const Eigen::Vector2d e1 = puv.row(padded.triangles(t, 1)) - puv.row(padded.triangles(t, 0));
+      const Eigen::Vector2d e2 = puv.row(padded.triangles(t, 2)) - puv.row(padded.triangles(t, 0));
+      flat[t] = std::abs(e1.x() * e2.y() - e1.y() * e2.x()) <= 1e-10 * h * h;
+    }
     std::vector<Eigen::Triplet<double>> T;
     std::vector<double> diag(N, 0.0);
     for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t)
-      for (int k = 0; k < 3; ++k) {
+      for (int k = 0; k < 3 && !flat[t]; ++k) {
         const int a = padded.triangles(t, k), b = padded.triangles(t, (k + 1) % 3), c = padded.triangles(t, (k + 2) % 3);
         const Eigen::Vector2d u = puv.row(a) - puv.row(c), w = puv.row(b) - puv.row(c);
         const double cot = u.dot(w) / std::max(std::abs(u.x() * w.y() - u.y() * w.x()), 1e-300);
@@ -200,6 +210,7 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     L.setFromTriplets(T.begin(), T.end());
     std::vector<double> area(N, 0.0);
     for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t) {
+      if (flat[t]) continue;
       Eigen::Vector2d p[3];
       for (int k = 0; k < 3; ++k) p[k] = puv.row(padded.triangles(t, k)).transpose();
       const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];

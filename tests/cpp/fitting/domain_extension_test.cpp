@@ -4,6 +4,7 @@
 #include <map>
 
 #include "fitting/domain_extension.h"
+#include "mesh/mesh_topology.h"
 #include "geometry/error.h"
 #include "test_regions.h"
 
@@ -156,4 +157,26 @@ TEST(DomainExtension, AMapThatFoldsAtTheBoundaryIsAClearErrorNotACrash) {
   ASSERT_GE(other, 0);
   merged.row(other) = merged.row(west);
   EXPECT_THROW(extendToRectangle(region, merged, 4, 2), Error);
+}
+
+// Issue 21: a map that flattens a triangle (three vertices on one line: a chord along a side of
+// the rectangle, a sliver squeezed to nothing) gave it infinite cotangents, and the whole
+// extension stopped as "singular". The flat triangle carries no area and is left out.
+TEST(DomainExtension, AFlatTriangleInTheMapIsLeftOutNotASingularSystem) {
+  Eigen::MatrixX2d uv;
+  const TriangleMesh region = ellipseRegion([](double x, double y) { return 0.1 * x * y; }, uv);
+  // An interior vertex moved onto the far edge of one of its triangles: that triangle is flat.
+  const MeshTopology topo(region);
+  std::vector<int> onRim(region.vertices.rows(), 0);
+  for (const auto& e : topo.edges())
+    if (e.count == 1) onRim[e.a] = onRim[e.b] = 1;
+  Eigen::Index t = 0;
+  while (onRim[region.triangles(t, 0)] || onRim[region.triangles(t, 1)] || onRim[region.triangles(t, 2)]) ++t;
+  const int v = region.triangles(t, 0), a = region.triangles(t, 1), b = region.triangles(t, 2);
+  uv.row(v) = 0.5 * (uv.row(a) + uv.row(b));
+  DomainExtensionOptions o;
+  o.marginLayers = 1;
+  const DomainExtension e = extendToRectangle(region, uv, 4, 2, o);
+  EXPECT_GT(e.mesh.vertices.rows(), region.vertices.rows());
+  EXPECT_TRUE(e.mesh.vertices.allFinite());
 }
