@@ -28,6 +28,10 @@
 #  9. tests/bench/bench_preview.py in freecadcmd: the Fill task panel's Preview (a Fill recomputed
 #     after each continuity change) with the prepared hole kept, with a fresh fill each time, and
 #     FreeCAD Surface Filling's recompute, on every 23rd corpus hole. BENCH_ONLY=preview runs part 9 alone.
+# 10. tests/bench/bench_fit_corpus.py: labeled fitting (extension G2, G1, none) on the labeled-region
+#     corpus (tests/corpus/labeled_regions.py, 63 regions cut from known surfaces): crashes, refusals,
+#     faces, folded maps, data goal, weak control points, condition, by shape and noise.
+#     BENCH_ONLY=fit-corpus runs part 10 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -85,6 +89,16 @@ bench_preview() {
     rm -rf "$HOME"
   )
 }
+bench_fit_corpus() {
+  [ -f "$root/corpus-out/fit/plane_strip_clean/region.obj" ] ||
+    /usr/bin/python3 tests/corpus/labeled_regions.py "$root/corpus-out/fit" >/dev/null
+  HOLEFILL_CLI="$build/App/holefill" /usr/bin/python3 tests/bench/bench_fit_corpus.py "$root/corpus-out/fit"
+}
+if [ "${BENCH_ONLY:-}" = fit-corpus ]; then  # BENCH_ONLY=fit-corpus runs part 10 alone
+  bench_fit_corpus
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = preview ]; then  # BENCH_ONLY=preview runs part 9 alone
   bench_preview
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
@@ -152,4 +166,5 @@ bench_cloud_params
 bench_thb
 bench_corpus
 bench_preview
+bench_fit_corpus
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"

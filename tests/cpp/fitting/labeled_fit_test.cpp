@@ -3,6 +3,10 @@
 #include "fitting/labeled_fit.h"
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
+#include "mesh/mesh_holes.h"
+#include "test_regions.h"
+
+#include <random>
 
 using namespace holefill;
 
@@ -50,4 +54,58 @@ TEST(LabeledFit, ParsesLabelsAndRunsEndToEndOnAFlatRectangle) {
   EXPECT_LT(r.fit.dataMax, 1e-9);  // a plane is fitted exactly
   EXPECT_TRUE(r.fit.valid);
   EXPECT_NE(r.toJson().find("\"weak_control_points\""), std::string::npos);
+}
+
+// Issue 21, never a crash: random small regions (unions of random disks over a grid, lifted onto a
+// random quadric, in either orientation) with their boundary split into four labeled runs at random
+// corners. Each must give a face or a holefill::Error, never a crash and never another exception.
+TEST(LabeledFit, RandomRegionsAndLabelSplitsGiveAFaceOrAClearError) {
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int faces = 0, errors = 0;
+  for (int round = 0; round < 40; ++round) {
+    SCOPED_TRACE("round " + std::to_string(round));
+    const int disks = 1 + static_cast<int>(unit(rng) * 3);
+    std::vector<Eigen::Vector3d> d;  // centre x, y and radius, in [0, 1]
+    for (int k = 0; k < disks; ++k) d.emplace_back(0.25 + 0.5 * unit(rng), 0.25 + 0.5 * unit(rng), 0.15 + 0.2 * unit(rng));
+    const double a = unit(rng) - 0.5, b = unit(rng) - 0.5, c = unit(rng) - 0.5;
+    Eigen::MatrixX2d uv;
+    TriangleMesh region = testregions::gridRegion(
+        16, 16, 1.0 / 16,
+        [&](double x, double y) {
+          for (const auto& q : d)
+            if (std::hypot(x - q.x(), y - q.y()) < q.z()) return true;
+          return false;
+        },
+        [&](double x, double y) { return Eigen::Vector3d(x, y, a * x * x + b * x * y + c * y * y); }, uv);
+    if (region.triangles.rows() < 2) continue;
+    if (round % 2) region.triangles.col(1).swap(region.triangles.col(2));
+    try {
+      const MeshHoleReport holes = findMeshHoles(region);
+      if (holes.holes.empty()) continue;
+      const std::vector<int>& loop = holes.holes[0].loop;
+      const int n = static_cast<int>(loop.size());
+      std::vector<int> cut;
+      for (int k = 0; k < 4; ++k) cut.push_back(static_cast<int>(unit(rng) * n));
+      std::sort(cut.begin(), cut.end());
+      std::vector<LabeledSegment> labels;
+      for (int k = 0; k < 4; ++k) {
+        LabeledSegment seg{static_cast<Side>(k), {}};
+        for (int i = cut[k];; i = (i + 1) % n) {
+          seg.vertices.push_back(loop[i]);
+          if (i == cut[(k + 1) % 4]) break;
+        }
+        labels.push_back(seg);
+      }
+      LabeledFitOptions o;
+      o.fit.controlU = o.fit.controlV = 8;
+      const LabeledFitResult r = fitLabeled(region, labels, o);
+      EXPECT_TRUE(r.fit.surface.poles.allFinite());
+      ++faces;
+    } catch (const Error&) {
+      ++errors;  // a clear refusal is an answer
+    }
+  }
+  std::printf("random regions: %d faces, %d clear errors\n", faces, errors);
+  EXPECT_GT(faces, 0);
 }
