@@ -8,8 +8,10 @@
 // along the triangles mean the region was labeled from its other side: it is read from there
 // (the same map). The start is Tutte's embedding with the
 // perimeter on the rectangle (unlabeled stretches spread along its sides by arc length), which
-// cannot fold; triangles that ARAP turns over are counted and, when there are any, the result
-// falls back to the last iterate without them.
+// cannot fold; a global step of ARAP that turns triangles over is stepped back towards the last
+// map without folds until none is left (flip repair), and the result is the last map without
+// folds. Ears of a labeled side (a triangle of three of its vertices) are flat in every map, not
+// folded.
 #pragma once
 
 #include <Eigen/Dense>
