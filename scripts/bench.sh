@@ -30,8 +30,9 @@
 #     FreeCAD Surface Filling's recompute, on every 23rd corpus hole. BENCH_ONLY=preview runs part 9 alone.
 # 10. tests/bench/bench_fit_corpus.py: labeled fitting (extension G2, G1, none) on the labeled-region
 #     corpus (tests/corpus/labeled_regions.py, 63 regions cut from known surfaces): crashes, refusals,
-#     faces, folded maps, data goal, weak control points, condition, by shape and noise.
-#     BENCH_ONLY=fit-corpus runs part 10 alone.
+#     faces, folded maps, data goal, weak control points, condition, by shape and noise; then
+#     tests/bench/bench_fitting.cpp --corpus: ours against the least-squares anchors on the same
+#     regions, judged against the truth (data max, band deviation). BENCH_ONLY=fit-corpus runs part 10 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -93,6 +94,9 @@ bench_fit_corpus() {
   [ -f "$root/corpus-out/fit/plane_strip_clean/region.obj" ] ||
     /usr/bin/python3 tests/corpus/labeled_regions.py "$root/corpus-out/fit" >/dev/null
   HOLEFILL_CLI="$build/App/holefill" /usr/bin/python3 tests/bench/bench_fit_corpus.py "$root/corpus-out/fit"
+  cmake --build "$build" --target holefill_bench_fitting -j "$(nproc)" >/dev/null
+  "$build/tests/holefill_bench_fitting" --corpus "$root/corpus-out/fit" tests/corpus/labeled_regions_index.json 2>/dev/null |
+    tee "$BENCH_OUT/bench_fit_corpus_anchors.md"
 }
 if [ "${BENCH_ONLY:-}" = fit-corpus ]; then  # BENCH_ONLY=fit-corpus runs part 10 alone
   bench_fit_corpus
