@@ -391,6 +391,26 @@ void curvaturePicture(const BSplineSurface& s, const std::string& path, const st
 
 }  // namespace
 
+// The fitters that need no FreeCAD, on one region: 0 labeled + G2 extension, 1 labeled without
+// extension, 2 least squares on the best-fit plane's parameters, 3 the same with thin plate 1e-4;
+// 12 x 12 cubic control points. fittedUV: the parameters each fitted point got.
+BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV) {
+  if (method <= 1) {
+    LabeledFitOptions o;
+    o.fit.controlU = o.fit.controlV = kControl;
+    o.extend = method == 0;
+    const LabeledFitResult r = fitLabeled(mesh, labels, o);
+    fittedUV = method == 0 ? r.extension.uv : r.parameterization.uv;
+    return r.fit.surface;
+  }
+  const Eigen::MatrixX2d uv = planeParameters(mesh.vertices);
+  TensorFitOptions o;
+  o.controlU = o.controlV = kControl;
+  o.smoothing = method == 2 ? 0 : 1e-4;
+  fittedUV = uv;
+  return fitTensorProduct(mesh.vertices, uv, mesh, uv, o).surface;
+}
+
 std::vector<Eigen::Vector3d> readPoints(const std::string& path) {
   std::istringstream in(readFileBytes(path));
   std::vector<Eigen::Vector3d> p;
@@ -439,24 +459,9 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
       Measure m;
       double truthMax = 0;
       try {
-        BSplineSurface s;
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
-        if (mi <= 1) {
-          LabeledFitOptions o;
-          o.fit.controlU = o.fit.controlV = kControl;
-          o.extend = mi == 0;
-          const LabeledFitResult f = fitLabeled(mesh, labels, o);
-          s = f.fit.surface;
-          fittedUV = mi == 0 ? f.extension.uv : f.parameterization.uv;
-        } else {
-          const Eigen::MatrixX2d uv = planeParameters(P);
-          TensorFitOptions o;
-          o.controlU = o.controlV = kControl;
-          o.smoothing = mi == 2 ? 0 : 1e-4;
-          s = fitTensorProduct(P, uv, mesh, uv, o).surface;
-          fittedUV = uv;
-        }
+        const BSplineSurface s = fitBy(mi, mesh, labels, fittedUV);
         m.seconds = seconds(t0);
         if (!s.poles.allFinite()) throw Error("non-finite control points");
         std::vector<Eigen::Vector3d> data;
@@ -592,28 +597,13 @@ int main(int argc, char** argv) {
         BSplineSurface s;
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
-        if (mi <= 1) {
-          LabeledFitOptions o;
-          o.fit.controlU = o.fit.controlV = kControl;
-          o.extend = mi == 0;
-          const LabeledFitResult r = fitLabeled(c.region.mesh, c.region.segments, o);
+        if (mi <= 3) {
+          s = fitBy(mi, c.region.mesh, c.region.segments, fittedUV);
           m.seconds = seconds(t0);
-          s = r.fit.surface;
-          fittedUV = mi == 0 ? r.extension.uv : r.parameterization.uv;
-          if (k == 0 || k == 7) {
-            char name[64];
-            std::snprintf(name, sizeof name, "/case%zu_%s.png", k, mi == 0 ? "ours" : "ours_noext");
-            curvaturePicture(s, out + name, methods[mi], 0.5);
+          if ((k == 0 || k == 7) && mi != 2) {
+            const char* tag[4] = {"ours", "ours_noext", "", "thinplate"};
+            curvaturePicture(s, out + "/case" + std::to_string(k) + "_" + tag[mi] + ".png", methods[mi], 0.5);
           }
-        } else if (mi <= 3) {
-          const Eigen::MatrixX2d uv = planeParameters(P);
-          TensorFitOptions o;
-          o.controlU = o.controlV = kControl;
-          o.smoothing = mi == 2 ? 0 : 1e-4;
-          s = fitTensorProduct(P, uv, c.region.mesh, uv, o).surface;
-          m.seconds = seconds(t0);
-          fittedUV = uv;
-          if ((k == 0 || k == 7) && mi == 3) curvaturePicture(s, out + "/case" + std::to_string(k) + "_thinplate.png", methods[mi], 0.5);
         } else {
           const std::string key = "case" + std::to_string(k) + (mi == 4 ? "_smooth" : "_raw");
           TopoDS_Shape shape;
