@@ -56,7 +56,7 @@ class FitPanel:
         layout.addRow("Margin layers:", self.margin)
         self.weights = {}
         for key, label, value in (("fairness", "Isocurve fairness:", 1e-2), ("smoothing", "Thin-plate smoothing:", 1e-6),
-                                  ("framePlacement", "Frame placement:", 1.0)):
+                                  ("framePlacement", "Frame placement:", 1.0), ("meshFairness", "Mesh fairness (E_Mesh):", 0.0)):
             w = QtWidgets.QDoubleSpinBox()
             w.setObjectName("HoleFillFit_" + key)
             w.setDecimals(8)

@@ -81,7 +81,8 @@ const char* kUsage =
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension G1|G2|none]\n"
-    "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--untrimmed-out S.brep] [--json]\n"
+    "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
+    "                [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
@@ -491,6 +492,7 @@ int cmdFit(const Args& a) {
   weight("--fairness", o.extension.fairness);
   weight("--smoothing", o.fit.smoothing);
   weight("--frame-placement", o.parameterization.framePlacement);
+  weight("--mesh-fairness", o.extension.meshFairness);
   const TriangleMesh region = readMesh(a.input);
   const std::vector<LabeledSegment> labels = parseLabelsJson(readFileBytes(a.get("--labels"), 1 << 26), a.get("--labels"));
   const LabeledFitResult r = fitLabeled(region, labels, o);

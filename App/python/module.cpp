@@ -454,7 +454,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("path"), "A quad cage OBJ (with # sharp/# knot/# anchor lines) as 0-based (vertices, quads, knots, sharp, anchors).");
   m.def("fitLabeled", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::string& labelsJson,
                          int controlU, int controlV, const std::string& extension, int margin, double fairness, double smoothing,
-                         double framePlacement) {
+                         double framePlacement, double meshFairness) {
     return guarded([&] {
       LabeledFitOptions o;
       o.fit.controlU = controlU;
@@ -464,10 +464,11 @@ PYBIND11_MODULE(HoleFillApp, m) {
       else if (extension == "G2") o.extension.order = 3;
       else if (extension == "none") o.extend = false;
       else throw Error("extension must be G1, G2 or none, got '" + extension + "'");
-      if (!(fairness >= 0 && smoothing >= 0 && framePlacement >= 0)) throw Error("the weights must be zero or positive");
+      if (!(fairness >= 0 && smoothing >= 0 && framePlacement >= 0 && meshFairness >= 0)) throw Error("the weights must be zero or positive");
       o.extension.marginLayers = margin;
       o.extension.fairness = fairness;
       o.parameterization.framePlacement = framePlacement;
+      o.extension.meshFairness = meshFairness;
       const std::vector<LabeledSegment> labels = parseLabelsJson(labelsJson);
       LabeledFitResult r;
       {
@@ -489,6 +490,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
      py::arg("extension") = "G2", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
+     py::arg("meshFairness") = 0.0,
      "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
   m.def("parameterizeCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,

@@ -42,6 +42,9 @@ expect_error "unknown label" "not N, E, S or W" "$T/region.obj" --labels "$T/bad
 expect_error "broken JSON" "not valid JSON" "$T/region.obj" --labels "$T/broken.json"
 expect_error "bad --ctrl" "ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 12
 expect_error "bad --extension" "G1, G2 or none" "$T/region.obj" --labels "$T/labels.json" --extension G3
+expect_error "negative --mesh-fairness" "non-negative number" "$T/region.obj" --labels "$T/labels.json" --mesh-fairness -1
+if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --mesh-fairness 0.01 --out "$T/fit_emesh.brep" --json \
+     >"$T/fit_emesh.json" 2>"$T/err"; then ok "fit with mesh fairness (E_Mesh)"; else bad "fit --mesh-fairness: $(cat "$T/err")"; fi
 for ext in G2 none; do
   if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --extension $ext --out "$T/fit_$ext.brep" \
        --untrimmed-out "$T/untrimmed_$ext.brep" --json >"$T/fit_$ext.json" 2>"$T/err"; then ok "fit with extension $ext"; else bad "fit $ext: $(cat "$T/err")"; fi

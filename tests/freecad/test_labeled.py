@@ -46,6 +46,12 @@ def test_a_labeled_region_becomes_one_trimmed_face():
     assert m.Topology[0] == before[0], "the mesh was modified"
     alone = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), extension="none")[2]
     assert alone["weak_control_points"] > 0 and alone["log10_condition"] > rep["log10_condition"], alone
+    # The paper's mesh fairness (E_Mesh) through the Python door: it changes the extension and
+    # keeps the fit sound; a negative weight is refused.
+    fair = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), meshFairness=1e-2)[2]
+    assert fair["weak_control_points"] == 0 and fair["data_max"] < 5e-3, fair
+    assert fair["extended"][0].tolist() != rep["extended"][0].tolist(), "meshFairness changed nothing"
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, meshFairness=-1), "zero or positive")
 
 
 def test_bad_labels_give_clear_errors():
@@ -80,6 +86,7 @@ def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
     doc.recompute()
     assert sorted(n for n in names if n != "-") == ["E", "N", "S", "W"], names
     fit = HoleFill.makeLabeledFit(lab, controlPoints=(10, 8))
+    assert fit.MeshFairness == 0.0
     import json
     rep = json.loads(fit.Report)
     assert fit.Shape.isValid() and rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3, rep

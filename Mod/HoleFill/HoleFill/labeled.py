@@ -27,13 +27,15 @@ def _labelsJson(labels):
     return json.dumps({"segments": [{"label": str(l), "vertices": [int(v) for v in vs]} for l, vs in labels]})
 
 
-def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0):
+def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
+               meshFairness=0.0):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "G2" (default), "G1" or "none" (fit the region alone, for comparison).
     Weights: fairness (isocurve fairness of the extension, relative to its polyharmonic energy),
     smoothing (thin-plate term of the fit), framePlacement (how firmly labeled vertices keep the
-    guiding frame's placement along their sides). The report also holds "uv" (per vertex),
+    guiding frame's placement along their sides), meshFairness (the paper's E_Mesh: how evenly the
+    extension's triangles are distorted from their neighbours; 0 leaves it out). The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
     triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
@@ -41,7 +43,7 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, f
     v, t = _arrays(mesh)
     face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(
         v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]), str(extension), int(margin),
-        float(fairness), float(smoothing), float(framePlacement))
+        float(fairness), float(smoothing), float(framePlacement), float(meshFairness))
     rep = json.loads(report)
     rep["uv"] = uv
     rep["frame"] = frame
@@ -219,6 +221,7 @@ class LabeledFitFeature:
         add("App::PropertyFloat", "Fairness", "Weights", "Isocurve fairness of the extension", 1e-2)
         add("App::PropertyFloat", "Smoothing", "Weights", "Thin-plate term of the fit", 1e-6)
         add("App::PropertyFloat", "FramePlacement", "Weights", "How firmly labeled vertices keep the frame's placement", 1.0)
+        add("App::PropertyFloat", "MeshFairness", "Weights", "E_Mesh: how evenly the extension's triangles are distorted (0: off)", 0.0)
         add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         for n in ("Untrimmed", "Report"):
@@ -232,7 +235,7 @@ class LabeledFitFeature:
         if lab is None or not hasattr(lab, "LabelsJson") or lab.Source is None:
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
-                                          obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement)
+                                          obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):
@@ -247,7 +250,7 @@ class LabeledFitFeature:
 
 
 def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   name="LabeledFit"):
+                   meshFairness=0.0, name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
@@ -260,6 +263,7 @@ def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="G2", margin=0, 
         obj.Extension = str(extension)
         obj.Margin = int(margin)
         obj.Fairness, obj.Smoothing, obj.FramePlacement = float(fairness), float(smoothing), float(framePlacement)
+        obj.MeshFairness = float(meshFairness)
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
 
