@@ -12,6 +12,11 @@ the surface normal. Labels follow one rule (issue 21): the four corners are the 
 vertices nearest the corners of the region's bounding box in the true parameters; S runs from SW
 to SE, E from SE to NE, N from NE to NW, W from NW to SW along the anticlockwise loop.
 
+Plus regions of a real scan: the Stanford bunny as CGAL's demo data ships it (libcgal-demo's
+data.tar.gz, bunny00.off), cut as balls around seed vertices where the scan is a height field over
+its best-fit plane, as a blob and as an L, parameters from that plane (the scan's own density:
+700-5,000 vertices); the truth is the scan itself, the band its vertices around the region.
+
 Per region, in OUT/<id>/: region.obj, labels.json, band.xyz (points of the true surface in the band
 around the region: the rest of its bounding rectangle grown by 10%, for the band deviation) and
 truth.xyz (noise-free positions of the region's vertices). The index (id, surface, shape, noise,
@@ -231,6 +236,105 @@ def make_region(idx, surface, shape_name, noise, clockwise, target):
     return {"uv": uv, "xyz": noisy, "truth": xyz, "tri": tri, "segments": segments, "band": band, "diag": diag}
 
 
+# --- a real scan: regions cut from the Stanford bunny as CGAL's demo data ships it -------------
+
+BUNNY_TAR = "/usr/share/doc/libcgal-demo/data.tar.gz"
+BUNNY_MEMBER = "data/meshes/bunny00.off"
+
+
+def load_bunny():
+    import tarfile
+    with tarfile.open(BUNNY_TAR) as tar:
+        text = tar.extractfile(BUNNY_MEMBER).read().decode()
+    tok = text.split()
+    assert tok[0] == "OFF"
+    nv, nf = int(tok[1]), int(tok[2])
+    v = np.array(tok[4:4 + 3 * nv], float).reshape(nv, 3)
+    f = np.array(tok[4 + 3 * nv:4 + 3 * nv + 4 * nf], int).reshape(nf, 4)[:, 1:]
+    return v, f
+
+
+def scan_region(bunny, seed, cut_quadrant, noise, clockwise, idx):
+    """The bunny's triangles within a ball around vertex `seed` (the component holding it), grown
+    while it stays a height field over its best-fit plane; parameters: that plane's coordinates
+    (so the labeling rule has its box corners). cut_quadrant: the quadrant of the parameter box
+    beyond the centre removed (an L). The band: the bunny's vertices near the region, outside it."""
+    v, f = bunny
+    rng = np.random.default_rng(idx)
+    centre = v[seed]
+    best = None
+    size = float(np.linalg.norm(v.max(0) - v.min(0)))
+    for r in np.linspace(0.02, 0.3, 15) * size:
+        near = np.linalg.norm(v - centre, axis=1) < r
+        tri = f[near[f].all(1)]
+        used = np.unique(tri)
+        if len(used) < 3:
+            continue
+        p = v[used] - v[used].mean(0)
+        _, _, vt = np.linalg.svd(p, full_matrices=False)
+        uvall = np.zeros((len(v), 2))
+        uvall[used] = p @ vt[:2].T
+        a, b, c = uvall[tri[:, 0]], uvall[tri[:, 1]], uvall[tri[:, 2]]
+        sgn = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+        if (sgn > 0).all() or (sgn < 0).all():  # a height field over the plane (no triangle turned over)
+            best = (r, tri, uvall, vt, sgn[0] < 0)
+        else:
+            break
+    if best is None or len(np.unique(best[1])) < 1000:
+        return None
+    r, tri, uvall, vt, flipped = best
+    if flipped:  # anticlockwise in (u, v)
+        uvall[:, 1] *= -1
+    if cut_quadrant:
+        cu = uvall[np.unique(tri)].mean(0)
+        c = uvall[tri].mean(1)
+        tri = tri[~((c[:, 0] > cu[0]) & (c[:, 1] > cu[1]))]
+    # the component holding the seed's triangles, and one boundary loop
+    loops = boundary_loops(tri)
+    if loops is None or len(loops) != 1:
+        return None
+    used = np.unique(tri)
+    remap = -np.ones(len(v), int)
+    remap[used] = np.arange(len(used))
+    xyz, uv, t = v[used], uvall[used], remap[tri]
+    outer_loop = boundary_loops(t)[0]
+    diag = float(np.linalg.norm(xyz.max(0) - xyz.min(0)))
+    ul, vl = uv.min(0)
+    uh, vh = uv.max(0)
+    ring = np.array(outer_loop)
+    def nearest(q):
+        return int(np.argmin(np.linalg.norm(uv[ring] - np.array(q), axis=1)))
+    corners = [nearest((ul, vl)), nearest((uh, vl)), nearest((uh, vh)), nearest((ul, vh))]
+    if len(set(corners)) < 4:
+        return None
+    def run(i, j):
+        out = [int(ring[i])]
+        while i != j:
+            i = (i + 1) % len(ring)
+            out.append(int(ring[i]))
+        return out
+    segments = [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
+    noisy = xyz + rng.normal(0, noise * diag, xyz.shape) if noise > 0 else xyz
+    if clockwise:
+        t = t[:, ::-1]
+    # band: bunny vertices within 1.25 r of the seed, not in the region, over the region's grown box
+    near = np.linalg.norm(v - centre, axis=1) < 1.25 * r
+    near[used] = False
+    q = (v[near] - v[used].mean(0)) @ vt[:2].T
+    if flipped:
+        q[:, 1] *= -1
+    du, dv = 0.1 * (uh - ul), 0.1 * (vh - vl)
+    keep = (q[:, 0] > ul - du) & (q[:, 0] < uh + du) & (q[:, 1] > vl - dv) & (q[:, 1] < vh + dv)
+    return {"xyz": noisy, "truth": xyz, "tri": t, "segments": segments, "band": v[near][keep], "diag": diag}
+
+
+# Seeds: the first three of every 1,500th vertex whose neighbourhood is a height field of at least
+# 1,000 vertices (the scan's own density); each as a blob and as an L, noise and orientation cycling.
+SCAN_SEEDS = 3
+SCAN_VARIANTS = [(False, 0.0, False), (True, 5e-4, True), (False, 2e-3, True), (True, 0.0, False), (False, 0.0, True),
+                 (True, 5e-4, False)]  # (L-cut, noise, clockwise) per seed pair
+
+
 def regions():
     """The corpus's list: every surface with every shape, noise and size cycling, orientation alternating."""
     out = []
@@ -277,6 +381,41 @@ def main():
         index.append({"id": rid, "surface": s, "shape": sh, "noise": noise, "clockwise": cw,
                       "vertices": int(len(r["xyz"])), "triangles": int(len(r["tri"])), "diagonal": round(r["diag"], 6),
                       "band_points": int(len(r["band"]))})
+    if os.path.exists(BUNNY_TAR):
+        bunny = load_bunny()
+        made, k = [], 0
+        for seed in range(0, len(bunny[0]), 1500):
+            if len(made) >= 2 * SCAN_SEEDS:
+                break
+            pair = []
+            for cut in (False, True):
+                _, noise, cw = SCAN_VARIANTS[len(made) + len(pair)]
+                r = scan_region(bunny, seed, cut, noise, cw, 5000 + seed)
+                if r is None:
+                    break
+                pair.append((seed, cut, noise, cw, r))
+            if len(pair) == 2:
+                made += pair
+        for seed, cut, noise, cw, r in made:
+            rid = "scan_bunny%d_%s_%s%s" % (seed, "lshape" if cut else "blob",
+                                            ("n%g" % (noise * 100)).replace(".", "p") if noise else "clean", "_cw" if cw else "")
+            d = os.path.join(out_dir, rid)
+            os.makedirs(d, exist_ok=True)
+            with open(os.path.join(d, "region.obj"), "w") as f:
+                f.write("# labeled region %s: cut from CGAL's bunny00.off (libcgal-demo)\n" % rid)
+                for p in r["xyz"]:
+                    f.write("v %.10g %.10g %.10g\n" % tuple(p))
+                for t in r["tri"]:
+                    f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
+            with open(os.path.join(d, "labels.json"), "w") as f:
+                json.dump({"segments": r["segments"]}, f)
+            np.savetxt(os.path.join(d, "band.xyz"), r["band"], fmt="%.10g")
+            np.savetxt(os.path.join(d, "truth.xyz"), r["truth"], fmt="%.10g")
+            index.append({"id": rid, "surface": "scan", "shape": "lshape" if cut else "blob", "noise": noise, "clockwise": cw,
+                          "vertices": int(len(r["xyz"])), "triangles": int(len(r["tri"])), "diagonal": round(r["diag"], 6),
+                          "band_points": int(len(r["band"]))})
+    else:
+        print("no real scan regions: %s is missing (apt-get install libcgal-demo)" % BUNNY_TAR, file=sys.stderr)
     if index_path:
         with open(index_path, "w") as f:
             json.dump({"generator": "tests/corpus/labeled_regions.py", "regions": index}, f, indent=1)
