@@ -172,6 +172,48 @@ def boundary_loops(tris):
     return loops
 
 
+def labels_by_rule(uv, ring):
+    """The issue's rule: corners at the loop vertices nearest the corners of the parameter box; S from
+    SW to SE, E from SE to NE, N from NE to NW, W from NW to SW along the anticlockwise loop `ring`.
+    None when two corners fall on one vertex."""
+    ring = np.asarray(ring)
+    lo, hi = uv.min(0), uv.max(0)
+
+    def nearest(q):
+        return int(np.argmin(np.linalg.norm(uv[ring] - np.array(q), axis=1)))
+    corners = [nearest((lo[0], lo[1])), nearest((hi[0], lo[1])), nearest((hi[0], hi[1])), nearest((lo[0], hi[1]))]
+    if len(set(corners)) < 4:
+        return None
+
+    def run(i, j):
+        out = [int(ring[i])]
+        while i != j:
+            i = (i + 1) % len(ring)
+            out.append(int(ring[i]))
+        return out
+    return [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
+
+
+def write_region(out_dir, rid, header, r, entry):
+    """region.obj, labels.json, band.xyz and truth.xyz of one region; its index entry."""
+    d = os.path.join(out_dir, rid)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, "region.obj"), "w") as f:
+        f.write("# labeled region %s: %s\n" % (rid, header))
+        for p in r["xyz"]:
+            f.write("v %.10g %.10g %.10g\n" % tuple(p))
+        for t in r["tri"]:
+            f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
+    with open(os.path.join(d, "labels.json"), "w") as f:
+        json.dump({"segments": r["segments"]}, f)
+    np.savetxt(os.path.join(d, "band.xyz"), r["band"], fmt="%.10g")
+    np.savetxt(os.path.join(d, "truth.xyz"), r["truth"], fmt="%.10g")
+    entry = dict({"id": rid}, **entry)
+    entry.update({"vertices": int(len(r["xyz"])), "triangles": int(len(r["tri"])), "diagonal": round(r["diag"], 6),
+                  "band_points": int(len(r["band"]))})
+    return entry
+
+
 def make_region(idx, surface, shape_name, noise, clockwise, target):
     rng = np.random.default_rng(idx)
     outer, inners = shape(shape_name)
@@ -207,26 +249,14 @@ def make_region(idx, surface, shape_name, noise, clockwise, target):
         return None
     # the outer loop: the one with the largest |area| in uv; anticlockwise since triangles are
     outer_loop = max(loops_v, key=lambda l: abs(area(uv[l])))
-    # labels by the rule: corners nearest the bbox corners of the region's true parameters
-    ul, vl = uv[:, 0].min(), uv[:, 1].min()
-    uh, vh = uv[:, 0].max(), uv[:, 1].max()
-    ring = np.array(outer_loop)
-    def nearest(q):
-        return int(np.argmin(np.linalg.norm(uv[ring] - np.array(q), axis=1)))
-    sw, se, ne, nw = nearest((ul, vl)), nearest((uh, vl)), nearest((uh, vh)), nearest((ul, vh))
-    if len({sw, se, ne, nw}) < 4:
+    segments = labels_by_rule(uv, outer_loop)
+    if segments is None:
         return None
-    def run(i, j):
-        out = [int(ring[i])]
-        while i != j:
-            i = (i + 1) % len(ring)
-            out.append(int(ring[i]))
-        return out
-    segments = [{"label": "S", "vertices": run(sw, se)}, {"label": "E", "vertices": run(se, ne)},
-                {"label": "N", "vertices": run(ne, nw)}, {"label": "W", "vertices": run(nw, sw)}]
     if clockwise:
         tri = tri[:, ::-1]
     # band: the true surface over the region's parameter bbox grown by 10%, outside the region
+    ul, vl = uv.min(0)
+    uh, vh = uv.max(0)
     du, dv = 0.1 * (uh - ul), 0.1 * (vh - vl)
     bu = np.linspace(ul - du, uh + du, 60)
     bv = np.linspace(vl - dv, vh + dv, 60)
@@ -301,19 +331,9 @@ def scan_region(bunny, seed, cut_quadrant, noise, clockwise, idx):
     diag = float(np.linalg.norm(xyz.max(0) - xyz.min(0)))
     ul, vl = uv.min(0)
     uh, vh = uv.max(0)
-    ring = np.array(outer_loop)
-    def nearest(q):
-        return int(np.argmin(np.linalg.norm(uv[ring] - np.array(q), axis=1)))
-    corners = [nearest((ul, vl)), nearest((uh, vl)), nearest((uh, vh)), nearest((ul, vh))]
-    if len(set(corners)) < 4:
+    segments = labels_by_rule(uv, outer_loop)
+    if segments is None:
         return None
-    def run(i, j):
-        out = [int(ring[i])]
-        while i != j:
-            i = (i + 1) % len(ring)
-            out.append(int(ring[i]))
-        return out
-    segments = [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
     noisy = xyz + rng.normal(0, noise * diag, xyz.shape) if noise > 0 else xyz
     if clockwise:
         t = t[:, ::-1]
@@ -365,22 +385,9 @@ def main():
         if r is None:
             print("skipped %s: no manifold region" % rid, file=sys.stderr)
             continue
-        d = os.path.join(out_dir, rid)
-        os.makedirs(d, exist_ok=True)
-        with open(os.path.join(d, "region.obj"), "w") as f:
-            f.write("# labeled region %s: %s surface, %s shape, noise %g of the diagonal, %s\n"
-                    % (rid, s, sh, noise, "clockwise" if cw else "anticlockwise"))
-            for p in r["xyz"]:
-                f.write("v %.10g %.10g %.10g\n" % tuple(p))
-            for t in r["tri"]:
-                f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
-        with open(os.path.join(d, "labels.json"), "w") as f:
-            json.dump({"segments": r["segments"]}, f)
-        np.savetxt(os.path.join(d, "band.xyz"), r["band"], fmt="%.10g")
-        np.savetxt(os.path.join(d, "truth.xyz"), r["truth"], fmt="%.10g")
-        index.append({"id": rid, "surface": s, "shape": sh, "noise": noise, "clockwise": cw,
-                      "vertices": int(len(r["xyz"])), "triangles": int(len(r["tri"])), "diagonal": round(r["diag"], 6),
-                      "band_points": int(len(r["band"]))})
+        index.append(write_region(out_dir, rid, "%s surface, %s shape, noise %g of the diagonal, %s"
+                                  % (s, sh, noise, "clockwise" if cw else "anticlockwise"), r,
+                                  {"surface": s, "shape": sh, "noise": noise, "clockwise": cw}))
     if os.path.exists(BUNNY_TAR):
         bunny = load_bunny()
         made, k = [], 0
@@ -399,21 +406,8 @@ def main():
         for seed, cut, noise, cw, r in made:
             rid = "scan_bunny%d_%s_%s%s" % (seed, "lshape" if cut else "blob",
                                             ("n%g" % (noise * 100)).replace(".", "p") if noise else "clean", "_cw" if cw else "")
-            d = os.path.join(out_dir, rid)
-            os.makedirs(d, exist_ok=True)
-            with open(os.path.join(d, "region.obj"), "w") as f:
-                f.write("# labeled region %s: cut from CGAL's bunny00.off (libcgal-demo)\n" % rid)
-                for p in r["xyz"]:
-                    f.write("v %.10g %.10g %.10g\n" % tuple(p))
-                for t in r["tri"]:
-                    f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
-            with open(os.path.join(d, "labels.json"), "w") as f:
-                json.dump({"segments": r["segments"]}, f)
-            np.savetxt(os.path.join(d, "band.xyz"), r["band"], fmt="%.10g")
-            np.savetxt(os.path.join(d, "truth.xyz"), r["truth"], fmt="%.10g")
-            index.append({"id": rid, "surface": "scan", "shape": "lshape" if cut else "blob", "noise": noise, "clockwise": cw,
-                          "vertices": int(len(r["xyz"])), "triangles": int(len(r["tri"])), "diagonal": round(r["diag"], 6),
-                          "band_points": int(len(r["band"]))})
+            index.append(write_region(out_dir, rid, "cut from CGAL's bunny00.off (libcgal-demo)", r,
+                                      {"surface": "scan", "shape": "lshape" if cut else "blob", "noise": noise, "clockwise": cw}))
     else:
         print("no real scan regions: %s is missing (apt-get install libcgal-demo)" % BUNNY_TAR, file=sys.stderr)
     if index_path:
