@@ -55,7 +55,8 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for r in index:
-            row = {"id": r["id"], "shape": r["shape"], "surface": r["surface"], "noise": r["noise"], "clockwise": r["clockwise"]}
+            row = {"id": r["id"], "shape": r["shape"], "surface": r["surface"], "noise": r["noise"], "clockwise": r["clockwise"],
+                   "labels": r.get("labels", "bbox")}
             for m in methods:
                 row[m] = run(cli, os.path.join(corpus, r["id"]), m, timeout, tmp)
             rows.append(row)
@@ -88,7 +89,7 @@ def main():
     print("|---" * 11 + "|")
     for m in methods:
         print("| %s | %s |" % (m, " | ".join(summary(rows, m))))
-    for key in ("shape", "noise"):
+    for key in ("labels", "shape", "noise"):
         print()
         print(head % key + "  (extension %s)" % methods[0])
         print("|---" * 11 + "|")

@@ -432,7 +432,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
   const std::vector<std::string> methods = {"labeled + G2 extension", "labeled, no extension", "least squares (plane param.)",
                                             "least squares + thin plate 1e-4", "labeled + G2 extension + E_Mesh 1e-2"};
   struct Row {
-    std::string id, shape;
+    std::string id, shape, labels;
     double noise;
     std::vector<Measure> m;
     std::vector<double> truthMax;
@@ -441,7 +441,8 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
   for (const JsonValue& r : regions->array) {
     const std::string id = r.find("id")->string;
     const std::string dir = corpus + "/" + id;
-    Row row{id, r.find("shape")->string, r.find("noise")->number, {}, {}};
+    const JsonValue* labelKind = r.find("labels");
+    Row row{id, r.find("shape")->string, labelKind ? labelKind->string : "bbox", r.find("noise")->number, {}, {}};
     TriangleMesh mesh;
     std::vector<LabeledSegment> labels;
     std::vector<Eigen::Vector3d> band, truth;
@@ -517,6 +518,8 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
     }
   };
   table("All regions", [](const Row&) { return true; });
+  table("Labeled by the bounding-box rule", [](const Row& r) { return r.labels == "bbox"; });
+  table("Labeled by corner angles", [](const Row& r) { return r.labels == "corners"; });
   std::vector<std::string> shapes;
   for (const Row& r : rows)
     if (std::find(shapes.begin(), shapes.end(), r.shape) == shapes.end()) shapes.push_back(r.shape);

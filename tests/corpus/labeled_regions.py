@@ -10,7 +10,9 @@ boundary points at the same spacing), with 2,000 to 20,000 vertices. Noise is Ga
 or 0.2% of the region's diagonal; half the regions have their triangles turned clockwise seen from
 the surface normal. Labels follow one rule (issue 21): the four corners are the outer boundary
 vertices nearest the corners of the region's bounding box in the true parameters; S runs from SW
-to SE, E from SE to NE, N from NE to NW, W from NW to SW along the anticlockwise loop.
+to SE, E from SE to NE, N from NE to NW, W from NW to SW along the anticlockwise loop. Regions with
+four convex corners or more (turning by 30 degrees or more) come a second time, labeled by their
+corner angles (the four sharpest), as a user labeling a part's sides would: id suffix _corners.
 
 Plus regions of a real scan: the Stanford bunny as CGAL's demo data ships it (libcgal-demo's
 data.tar.gz, bunny00.off), cut as balls around seed vertices where the scan is a height field over
@@ -194,6 +196,32 @@ def labels_by_rule(uv, ring):
     return [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
 
 
+def labels_by_corners(uv, ring, min_turn=np.radians(30)):
+    """Labels by corner angles: the four vertices of the anticlockwise loop `ring` where the boundary
+    turns left most sharply (by at least min_turn, in the true parameters) are the corners, S the
+    side that starts at the one nearest the parameter box's SW corner, then E, N, W. None when the
+    loop has fewer than four such corners (a blob, a crescent)."""
+    ring = np.asarray(ring)
+    p = uv[ring]
+    a, b = p - np.roll(p, 1, 0), np.roll(p, -1, 0) - p
+    turn = np.arctan2(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0], (a * b).sum(1))  # > 0: a left (convex) turn
+    candidates = np.where(turn >= min_turn)[0]
+    if len(candidates) < 4:
+        return None
+    corners = sorted(candidates[np.argsort(-turn[candidates])[:4]])
+    lo = uv.min(0)
+    first = int(np.argmin([np.linalg.norm(p[c] - lo) for c in corners]))
+    corners = corners[first:] + corners[:first]
+
+    def run(i, j):
+        out = [int(ring[i])]
+        while i != j:
+            i = (i + 1) % len(ring)
+            out.append(int(ring[i]))
+        return out
+    return [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
+
+
 def write_region(out_dir, rid, header, r, entry):
     """region.obj, labels.json, band.xyz and truth.xyz of one region; its index entry."""
     d = os.path.join(out_dir, rid)
@@ -252,6 +280,7 @@ def make_region(idx, surface, shape_name, noise, clockwise, target):
     segments = labels_by_rule(uv, outer_loop)
     if segments is None:
         return None
+    corner_segments = labels_by_corners(uv, outer_loop)
     if clockwise:
         tri = tri[:, ::-1]
     # band: the true surface over the region's parameter bbox grown by 10%, outside the region
@@ -263,7 +292,8 @@ def make_region(idx, surface, shape_name, noise, clockwise, target):
     bq = np.stack(np.meshgrid(bu, bv), -1).reshape(-1, 2)
     bq = bq[~inside(loops, bq) & (seg_dist(bq, loops) > 2 * h)]
     band = f(bq[:, 0], bq[:, 1])
-    return {"uv": uv, "xyz": noisy, "truth": xyz, "tri": tri, "segments": segments, "band": band, "diag": diag}
+    return {"uv": uv, "xyz": noisy, "truth": xyz, "tri": tri, "segments": segments, "band": band, "diag": diag,
+            "corner_segments": corner_segments}
 
 
 # --- a real scan: regions cut from the Stanford bunny as CGAL's demo data ships it -------------
@@ -388,6 +418,12 @@ def main():
         index.append(write_region(out_dir, rid, "%s surface, %s shape, noise %g of the diagonal, %s"
                                   % (s, sh, noise, "clockwise" if cw else "anticlockwise"), r,
                                   {"surface": s, "shape": sh, "noise": noise, "clockwise": cw}))
+        # The same region labeled by its corner angles, where it has four convex corners or more.
+        if r["corner_segments"] is not None:
+            rc = dict(r, segments=r["corner_segments"])
+            index.append(write_region(out_dir, rid + "_corners", "%s surface, %s shape, noise %g of the diagonal, %s, labeled "
+                                      "by corner angles" % (s, sh, noise, "clockwise" if cw else "anticlockwise"), rc,
+                                      {"surface": s, "shape": sh, "noise": noise, "clockwise": cw, "labels": "corners"}))
     if os.path.exists(BUNNY_TAR):
         bunny = load_bunny()
         made, k = [], 0
