@@ -186,11 +186,14 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     // sliver the flattening squeezed to nothing) have no cotangents and no area: left out of the
     // Laplacian, whose weights they made infinite (27 of the corpus's 63 regions stopped on a
     // "singular" system whose entries were inf).
+    // Twice each triangle's uv area, once: the cotangents' denominator and the Voronoi areas'.
+    std::vector<double> twice(padded.triangles.rows());
     std::vector<char> flat(padded.triangles.rows(), 0);
     for (Eigen::Index t = 0; t < padded.triangles.rows(); ++t) {
       const Eigen::Vector2d e1 = puv.row(padded.triangles(t, 1)) - puv.row(padded.triangles(t, 0));
       const Eigen::Vector2d e2 = puv.row(padded.triangles(t, 2)) - puv.row(padded.triangles(t, 0));
-      flat[t] = std::abs(e1.x() * e2.y() - e1.y() * e2.x()) <= 1e-10 * h * h;
+      twice[t] = std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+      flat[t] = twice[t] <= 1e-10 * h * h;
     }
     std::vector<Eigen::Triplet<double>> T;
     std::vector<double> diag(N, 0.0);
@@ -198,7 +201,7 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       for (int k = 0; k < 3 && !flat[t]; ++k) {
         const int a = padded.triangles(t, k), b = padded.triangles(t, (k + 1) % 3), c = padded.triangles(t, (k + 2) % 3);
         const Eigen::Vector2d u = puv.row(a) - puv.row(c), w = puv.row(b) - puv.row(c);
-        const double cot = u.dot(w) / std::max(std::abs(u.x() * w.y() - u.y() * w.x()), 1e-300);
+        const double cot = u.dot(w) / twice[t];
         const double wgt = 0.5 * cot;  // the weight of edge a-b from the corner at c
         T.emplace_back(a, b, wgt);
         T.emplace_back(b, a, wgt);
@@ -213,20 +216,18 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       if (flat[t]) continue;
       Eigen::Vector2d p[3];
       for (int k = 0; k < 3; ++k) p[k] = puv.row(padded.triangles(t, k)).transpose();
-      const Eigen::Vector2d e1 = p[1] - p[0], e2 = p[2] - p[0];
-      const double twice = std::abs(e1.x() * e2.y() - e1.y() * e2.x());
       int obtuse = -1;
       for (int k = 0; k < 3; ++k)
         if ((p[(k + 1) % 3] - p[k]).dot(p[(k + 2) % 3] - p[k]) < 0) obtuse = k;
       for (int k = 0; k < 3; ++k) {
         const int v = padded.triangles(t, k);
         if (obtuse >= 0) {
-          area[v] += twice / (obtuse == k ? 4 : 8);
+          area[v] += twice[t] / (obtuse == k ? 4 : 8);
           continue;
         }
         for (int side : {1, 2}) {  // the circumcentric cell: |e|² cot(opposite angle) / 8 for both edges at k
           const Eigen::Vector2d b = p[(k + side) % 3], c = p[(k + 3 - side) % 3];
-          area[v] += (b - p[k]).squaredNorm() * (p[k] - c).dot(b - c) / std::max(twice, 1e-300) / 8;
+          area[v] += (b - p[k]).squaredNorm() * (p[k] - c).dot(b - c) / twice[t] / 8;
         }
       }
     }

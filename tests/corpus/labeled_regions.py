@@ -174,6 +174,17 @@ def boundary_loops(tris):
     return loops
 
 
+def sides_between(ring, corners):
+    """The S, E, N, W segments of the loop `ring` between its four corner positions, in loop order."""
+    def run(i, j):
+        out = [int(ring[i])]
+        while i != j:
+            i = (i + 1) % len(ring)
+            out.append(int(ring[i]))
+        return out
+    return [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
+
+
 def labels_by_rule(uv, ring):
     """The issue's rule: corners at the loop vertices nearest the corners of the parameter box; S from
     SW to SE, E from SE to NE, N from NE to NW, W from NW to SW along the anticlockwise loop `ring`.
@@ -186,14 +197,7 @@ def labels_by_rule(uv, ring):
     corners = [nearest((lo[0], lo[1])), nearest((hi[0], lo[1])), nearest((hi[0], hi[1])), nearest((lo[0], hi[1]))]
     if len(set(corners)) < 4:
         return None
-
-    def run(i, j):
-        out = [int(ring[i])]
-        while i != j:
-            i = (i + 1) % len(ring)
-            out.append(int(ring[i]))
-        return out
-    return [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
+    return sides_between(ring, corners)
 
 
 def labels_by_corners(uv, ring, min_turn=np.radians(30)):
@@ -212,14 +216,7 @@ def labels_by_corners(uv, ring, min_turn=np.radians(30)):
     lo = uv.min(0)
     first = int(np.argmin([np.linalg.norm(p[c] - lo) for c in corners]))
     corners = corners[first:] + corners[:first]
-
-    def run(i, j):
-        out = [int(ring[i])]
-        while i != j:
-            i = (i + 1) % len(ring)
-            out.append(int(ring[i]))
-        return out
-    return [{"label": L, "vertices": run(corners[k], corners[(k + 1) % 4])} for k, L in enumerate("SENW")]
+    return sides_between(ring, corners)
 
 
 def write_region(out_dir, rid, header, r, entry):
