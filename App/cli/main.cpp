@@ -82,8 +82,11 @@ const char* kUsage =
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension G1|G2|none]\n"
     "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
-    "                [--untrimmed-out S.brep] [--json]\n"
-    "                labeled fitting of a trimmed mesh region; LABELS.json:\n"
+    "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--untrimmed-out S.brep] [--json]\n"
+    "                labeled fitting of a trimmed mesh region; control points refined from 12x12 up to N (40) per\n"
+    "                direction while the data max exceeds T (1e-3 of the diagonal; --ctrl alone: exactly those);\n"
+    "                labeled vertices deeper than D (0.05) of their side inside its line past a sharp turn are\n"
+    "                left free (negative: all held); LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
     "                [--weights W.pt] [--json]\n"
@@ -477,7 +480,18 @@ int cmdFit(const Args& a) {
     if (x == std::string::npos) throw Error("--ctrl takes NUxNV, e.g. 12x12, got '" + c + "'");
     o.fit.controlU = static_cast<int>(number(c.substr(0, x), "--ctrl"));
     o.fit.controlV = static_cast<int>(number(c.substr(x + 1), "--ctrl"));
+    o.maxControl = 0;  // exactly these, unless --max-ctrl asks to refine from them
   }
+  if (a.has("--max-ctrl")) {
+    o.maxControl = static_cast<int>(number(a.get("--max-ctrl"), "--max-ctrl"));
+    if (o.maxControl != 0 && o.maxControl < std::max(o.fit.controlU, o.fit.controlV))
+      throw Error("--max-ctrl must be 0 (exactly --ctrl) or at least the larger --ctrl count");
+  }
+  if (a.has("--tolerance")) {
+    o.tolerance = number(a.get("--tolerance"), "--tolerance");
+    if (!(o.tolerance > 0)) throw Error("--tolerance must be positive");
+  }
+  if (a.has("--release-depth")) o.parameterization.releaseDepth = number(a.get("--release-depth"), "--release-depth");
   const std::string ext = a.get("--extension", "G2");
   if (ext == "G1") o.extension.order = 2;
   else if (ext == "G2") o.extension.order = 3;

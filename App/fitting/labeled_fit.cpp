@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
@@ -14,11 +15,40 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   LabeledFitResult r;
   r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
   const LabeledParameterization& p = r.parameterization;
-  if (o.extend) {
-    r.extension = extendToRectangle(region, p.uv, p.width, p.height, o.extension);
-    r.fit = fitTensorProduct(r.extension.mesh.vertices, r.extension.uv, region, p.uv, o.fit);
-  } else {
-    r.fit = fitTensorProduct(region.vertices, p.uv, region, p.uv, o.fit);
+  if (o.extend) r.extension = extendToRectangle(region, p.uv, p.width, p.height, o.extension);
+  auto fitWith = [&](const TensorFitOptions& fo) {
+    return o.extend ? fitTensorProduct(r.extension.mesh.vertices, r.extension.uv, region, p.uv, fo)
+                    : fitTensorProduct(region.vertices, p.uv, region, p.uv, fo);
+  };
+  TensorFitOptions fo = o.fit;
+  r.fit = fitWith(fo);
+  auto describe = [](const TensorFitOptions& f, const TensorFitResult& t) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%dx%d: data max %.2e, rms %.2e, %d weak, log10 condition %.1f", f.controlU, f.controlV, t.dataMax,
+                  t.dataRms, t.weakControlPoints, t.log10Condition);
+    return std::string(line);
+  };
+  r.refinements.push_back(describe(fo, r.fit));
+  while (o.maxControl > 0 && r.fit.dataMax > o.tolerance) {
+    TensorFitOptions next = fo;
+    next.controlU = std::min(o.maxControl, (3 * fo.controlU + 1) / 2);
+    next.controlV = std::min(o.maxControl, (3 * fo.controlV + 1) / 2);
+    if (next.controlU == fo.controlU && next.controlV == fo.controlV) {
+      r.refinements.push_back("stopped: " + std::to_string(o.maxControl) + " control points per direction at most");
+      break;
+    }
+    TensorFitResult t = fitWith(next);
+    r.refinements.push_back(describe(next, t));
+    if (t.weakControlPoints > r.fit.weakControlPoints || !(t.log10Condition < 8)) {
+      r.refinements.push_back("stopped: weak control points or ill-conditioned; the previous kept");
+      break;
+    }
+    if (!(t.dataRms < r.fit.dataRms * (2.0 / 3.0))) {
+      r.refinements.push_back("stopped: the data rms fell by less than a third (noise); the previous kept");
+      break;
+    }
+    r.fit = std::move(t);
+    fo = next;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
@@ -42,6 +72,7 @@ std::string LabeledFitResult::toJson() const {
       .field("log10_condition", fit.log10Condition)
       .field("face_valid", fit.valid)
       .field("seconds", seconds)
+      .field("refinements", refinements)
       .field("warnings", parameterization.warnings)
       .endObject();
   return j.str();

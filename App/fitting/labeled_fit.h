@@ -16,14 +16,22 @@ namespace holefill {
 struct LabeledFitOptions {
   LabeledParameterizationOptions parameterization;
   DomainExtensionOptions extension;  // order 3 (G2) by default
-  TensorFitOptions fit;
+  TensorFitOptions fit;  // fit.controlU × fit.controlV: the control points to start from
   bool extend = true;
+  // Control points chosen by the data: from fit.controlU × fit.controlV, refined by half again per
+  // direction while the region's data max exceeds `tolerance` (of its diagonal), up to maxControl
+  // per direction. A refinement is undone, and ends the search, when it brings weak control
+  // points or a condition of 1e8 or more, or does not cut the data RMS by a third (what is left is
+  // noise, which more control points would follow). maxControl 0: exactly fit.controlU × controlV.
+  double tolerance = 1e-3;
+  int maxControl = 40;
 };
 
 struct LabeledFitResult {
   LabeledParameterization parameterization;
   DomainExtension extension;         // empty when not extended
   TensorFitResult fit;
+  std::vector<std::string> refinements;  // control points tried, with their data max, and why the search stopped
   double seconds = 0;
   std::string toJson() const;
 };

@@ -1,17 +1,24 @@
 // Labeled parameterization of a trimmed mesh region (mesh-extension.md sec. 4.2, after Vaitkus &
 // Várady): the user labels boundary segments North/East/South/West; a guiding frame
 // (guiding_frame.h) fitted to the labeled points gives where along its rectangle side each
-// labeled vertex belongs and the rectangle's proportions; local–global As-Rigid-As-Possible
-// mapping (Liu et al. 2008) then flattens the region with every labeled vertex held on its side
-// at the frame's position, only the rectangle's overall scale left to the optimisation.
+// labeled vertex belongs and the rectangle's starting proportions; local–global
+// As-Rigid-As-Possible mapping (Liu et al. 2008) then flattens the region with every labeled
+// vertex held on its side, the rectangle's width and height left to the optimisation.
 // Unlabeled boundary vertices and inner holes are free. Labels that run S, E, N, W clockwise
 // along the triangles mean the region was labeled from its other side: it is read from there
-// (the same map). The start is Tutte's embedding with the
-// perimeter on the rectangle (unlabeled stretches spread along its sides by arc length), which
-// cannot fold; a global step of ARAP that turns triangles over is stepped back towards the last
-// map without folds until none is left (flip repair), and the result is the last map without
-// folds. Ears of a labeled side (a triangle of three of its vertices) are flat in every map, not
-// folded.
+// (the same map). The start is Tutte's embedding with the perimeter on the rectangle (unlabeled
+// stretches spread along its sides by arc length), which cannot fold; a global step of ARAP that
+// turns triangles over is stepped back towards the last map without folds until none is left
+// (flip repair), and the result is the last map without folds. Ears of a labeled side (a
+// triangle of three of its vertices) are flat in every map, not folded.
+//
+// Beyond the paper, for labels that run round what cannot be a side (the corpus's rule labels
+// every boundary vertex): a labeled stretch that lies deep inside its side's line past a sharp
+// turn — a notch, slot, bitten corner or a crescent's horn — is left free (releaseDepth), so that
+// the map stays the surface's own there and the extension continues the surface into it; ARAP
+// then starts from the as-similar-as-possible map, and the held map is kept instead wherever
+// leaving them free did not lower the distortion. ARAP reads the triangles of a copy smoothed
+// along the normal (denoise), so that scan noise is not taken for the surface's shape.
 #pragma once
 
 #include <Eigen/Dense>
@@ -34,6 +41,14 @@ struct LabeledParameterizationOptions {
   // the mean ARAP edge weight; every labeled vertex stays on its side whatever the weight. Large:
   // the placement is held (the paper's choice); 0: ARAP alone decides it.
   double framePlacement = 1.0;
+  // Labeled vertices deeper than this fraction of their side's chord inside the line supporting
+  // the side (across it, within the surface) are left free: a notch, slot, concave arc or rounded
+  // corner labeled as part of a side cannot lie on the rectangle's side without the map turning
+  // singular there. Negative: every labeled vertex is held on its side, as given.
+  double releaseDepth = 0.05;
+  // Rounds of Taubin smoothing of a copy of the region whose triangles ARAP and the guiding frame
+  // then read (the map is of the surface, not of its scan noise); 0: the region as given.
+  int denoise = 10;
   GuidingFrameOptions frame;
 };
 

@@ -21,6 +21,7 @@
 #include "fill/fairness_energy.h"
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
+#include "geometry/spd_condition.h"
 #include "mesh/mesh_holes.h"
 
 namespace holefill {
@@ -103,11 +104,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   const Eigen::SparseMatrix<double> E = fairnessMatrix(3, s.knotsU, 3, s.knotsV, FairnessWeights{1.0, 0.0});
   const double scale = std::max(1e-300, N.diagonal().maxCoeff()) / std::max(1e-300, Eigen::MatrixXd(E).diagonal().maxCoeff());
   N += o.smoothing * scale * E;
-  {
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig{Eigen::MatrixXd(N)};
-    const double lo = eig.eigenvalues().minCoeff(), hi = eig.eigenvalues().maxCoeff();
-    r.log10Condition = lo > 0 ? std::log10(hi / lo) : std::numeric_limits<double>::infinity();
-  }
+  r.log10Condition = log10Condition(N);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(N);
   if (solver.info() != Eigen::Success) throw Error("the fitting system is singular: add smoothing or fewer control points");
   s.poles = solver.solve(B.transpose() * points);

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "fitting/labeled_fit.h"
+#include "geometry/spd_condition.h"
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
@@ -263,7 +264,7 @@ struct Measure {
 // Weak control points and the log10 condition of BᵀB for the points' parameters.
 void supportAndCondition(const BSplineSurface& s, const Eigen::MatrixX2d& uv, Measure& m) {
   const int nu = s.numU(), nv = s.numV(), pu = s.degreeU, pv = s.degreeV;
-  Eigen::MatrixXd N = Eigen::MatrixXd::Zero(nu * nv, nu * nv);
+  std::vector<Eigen::Triplet<double>> T;
   std::vector<int> support(nu * nv, 0);
   for (Eigen::Index k = 0; k < uv.rows(); ++k) {
     const double u = std::clamp(uv(k, 0), s.knotsU.front(), s.knotsU.back()), v = std::clamp(uv(k, 1), s.knotsV.front(), s.knotsV.back());
@@ -274,13 +275,13 @@ void supportAndCondition(const BSplineSurface& s, const Eigen::MatrixX2d& uv, Me
       for (int b = 0; b <= pv; ++b) row.emplace_back((su - pu + a) * nv + (sv - pv + b), Bu(0, a) * Bv(0, b));
     for (const auto& [i, x] : row) {
       ++support[i];
-      for (const auto& [j, y] : row) N(i, j) += x * y;
+      for (const auto& [j, y] : row) T.emplace_back(i, j, x * y);
     }
   }
   m.weak = static_cast<int>(std::count_if(support.begin(), support.end(), [](int c) { return c < 3; }));
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(N, Eigen::EigenvaluesOnly);
-  const double lo = eig.eigenvalues().minCoeff(), hi = eig.eigenvalues().maxCoeff();
-  m.log10Cond = lo > 1e-15 * hi ? std::log10(hi / lo) : std::numeric_limits<double>::infinity();
+  Eigen::SparseMatrix<double> N(nu * nv, nu * nv);
+  N.setFromTriplets(T.begin(), T.end());
+  m.log10Cond = log10Condition(N);
 }
 
 // Distances from points to a surface by closest point (grid-seeded Newton per point).
@@ -479,7 +480,13 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
       row.m.push_back(m);
       row.truthMax.push_back(truthMax);
     }
-    std::fprintf(stderr, "%s done\n", id.c_str());
+    // One line per region on stderr (per method: data max vs truth, band, weak, log10 cond, s), so
+    // that shards of the corpus run side by side can be merged.
+    std::fprintf(stderr, "region %s %s %s %g", id.c_str(), row.shape.c_str(), row.labels.c_str(), row.noise);
+    for (size_t mi = 0; mi < methods.size(); ++mi)
+      std::fprintf(stderr, " | %d %.3e %.3e %d %.2f %.2f", row.m[mi].failed ? 1 : 0, row.truthMax[mi], row.m[mi].truthToFit, row.m[mi].weak,
+                   row.m[mi].log10Cond, row.m[mi].seconds);
+    std::fprintf(stderr, "\n");
     rows.push_back(row);
   }
   // Goals (issue 21): data max <= 1e-3 of the diagonal noise-free, <= 3 sigma (3 x noise) with

@@ -61,4 +61,17 @@ assert g2["data_max"] < 5e-3, g2
 assert abs(g2["width"] - 6.0) < 0.1 and abs(g2["height"] - 3.0) < 0.1, g2
 PY
 [ -s "$T/untrimmed_G2.brep" ] && ok "untrimmed surface written" || bad "no untrimmed surface"
+# Control points chosen by the data: from 5x5, refined while the data max exceeds the tolerance.
+expect_error "--max-ctrl below --ctrl" "--max-ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
+expect_error "zero --tolerance" "--tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
+if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --tolerance 1e-4 --out "$T/fit_refined.brep" --json \
+     >"$T/fit_refined.json" 2>"$T/err"; then ok "fit with refined control points"; else bad "fit --max-ctrl: $(cat "$T/err")"; fi
+"$PY" - "$T" <<'PY' && ok "refinement: more control points, the data closer, each try reported" || bad "refined: $(cat "$T/fit_refined.json")"
+import json, sys
+t = sys.argv[1]
+r = json.load(open(t + "/fit_refined.json"))
+assert r["control_points_u"] > 5 and len(r["refinements"]) >= 2, r
+assert r["refinements"][0].startswith("5x5"), r
+assert r["data_max"] < 1e-3 and r["weak_control_points"] == 0, r
+PY
 finish

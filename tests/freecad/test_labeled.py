@@ -52,6 +52,14 @@ def test_a_labeled_region_becomes_one_trimmed_face():
     assert fair["weak_control_points"] == 0 and fair["data_max"] < 5e-3, fair
     assert fair["extended"][0].tolist() != rep["extended"][0].tolist(), "meshFairness changed nothing"
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, meshFairness=-1), "zero or positive")
+    # Control points chosen by the data through the Python door; exactly the given ones with
+    # maxControl=0; a maximum below the start is refused.
+    refined = HoleFill.fitLabeled(m, labels, controlPoints=(5, 5), maxControl=30, tolerance=1e-4)[2]
+    assert refined["control_points_u"] > 5 and len(refined["refinements"]) >= 2, refined
+    assert refined["weak_control_points"] == 0 and refined["data_max"] < 1e-3, refined
+    exact = HoleFill.fitLabeled(m, labels, controlPoints=(5, 5), maxControl=0)[2]
+    assert exact["control_points_u"] == 5 and len(exact["refinements"]) == 1, exact
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), maxControl=6), "maxControl")
 
 
 def test_bad_labels_give_clear_errors():
@@ -87,6 +95,7 @@ def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
     assert sorted(n for n in names if n != "-") == ["E", "N", "S", "W"], names
     fit = HoleFill.makeLabeledFit(lab, controlPoints=(10, 8))
     assert fit.MeshFairness == 0.0
+    assert fit.MaxControlPoints == 40 and fit.Tolerance == 1e-3 and fit.ReleaseDepth == 0.05
     import json
     rep = json.loads(fit.Report)
     assert fit.Shape.isValid() and rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3, rep

@@ -28,14 +28,19 @@ def _labelsJson(labels):
 
 
 def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-               meshFairness=0.0):
+               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "G2" (default), "G1" or "none" (fit the region alone, for comparison).
     Weights: fairness (isocurve fairness of the extension, relative to its polyharmonic energy),
     smoothing (thin-plate term of the fit), framePlacement (how firmly labeled vertices keep the
     guiding frame's placement along their sides), meshFairness (the paper's E_Mesh: how evenly the
-    extension's triangles are distorted from their neighbours; 0 leaves it out). The report also holds "uv" (per vertex),
+    extension's triangles are distorted from their neighbours; 0 leaves it out). Control points:
+    from controlPoints, refined by half again per direction while the data max exceeds tolerance
+    (of the region's diagonal), up to maxControl per direction (0: exactly controlPoints); the
+    report's "refinements" lists the tries. releaseDepth: labeled vertices deeper than this
+    fraction of their side's chord inside its line, past a sharp turn (a notch, slot, bite), are
+    left free for the extension (negative: every labeled vertex held). The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
     triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
@@ -43,7 +48,8 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, f
     v, t = _arrays(mesh)
     face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(
         v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]), str(extension), int(margin),
-        float(fairness), float(smoothing), float(framePlacement), float(meshFairness))
+        float(fairness), float(smoothing), float(framePlacement), float(meshFairness), int(maxControl), float(tolerance),
+        float(releaseDepth))
     rep = json.loads(report)
     rep["uv"] = uv
     rep["frame"] = frame
@@ -222,6 +228,13 @@ class LabeledFitFeature:
         add("App::PropertyFloat", "Smoothing", "Weights", "Thin-plate term of the fit", 1e-6)
         add("App::PropertyFloat", "FramePlacement", "Weights", "How firmly labeled vertices keep the frame's placement", 1.0)
         add("App::PropertyFloat", "MeshFairness", "Weights", "E_Mesh: how evenly the extension's triangles are distorted (0: off)", 0.0)
+        add("App::PropertyIntegerConstraint", "MaxControlPoints", "Fit",
+            "Control points are refined from ControlPointsU x V up to this many per direction while the data max exceeds "
+            "the tolerance (0: exactly ControlPointsU x V)", (40, 0, 200, 1))
+        add("App::PropertyFloat", "Tolerance", "Fit", "Data max (of the region's diagonal) that ends the refinement", 1e-3)
+        add("App::PropertyFloat", "ReleaseDepth", "Fit",
+            "Labeled vertices deeper than this fraction of their side inside its line, past a sharp turn, are left free "
+            "(negative: all held)", 0.05)
         add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         for n in ("Untrimmed", "Report"):
@@ -235,7 +248,8 @@ class LabeledFitFeature:
         if lab is None or not hasattr(lab, "LabelsJson") or lab.Source is None:
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
-                                          obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness)
+                                          obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness,
+                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):
@@ -250,7 +264,7 @@ class LabeledFitFeature:
 
 
 def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   meshFairness=0.0, name="LabeledFit"):
+                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
@@ -264,6 +278,7 @@ def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="G2", margin=0, 
         obj.Margin = int(margin)
         obj.Fairness, obj.Smoothing, obj.FramePlacement = float(fairness), float(smoothing), float(framePlacement)
         obj.MeshFairness = float(meshFairness)
+        obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth = int(maxControl), float(tolerance), float(releaseDepth)
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
 

@@ -185,26 +185,8 @@ TEST(LabeledParameterization, ConcaveLShapeUSlotAndBittenCornerKeepASimpleBounda
     const TriangleMesh region = testregions::gridRegion(
         25, 25, 0.04, c.inside,
         [](double x, double y) { return Eigen::Vector3d(3 * std::cos(M_PI * x), 3 * std::sin(M_PI * x), 10 * y); }, truth);
-    const MeshHoleReport holes = findMeshHoles(region);
-    ASSERT_EQ(holes.holes.size(), 1u);
-    const std::vector<int>& loop = holes.holes[0].loop;  // anticlockwise, as the triangles run
-    const Eigen::Vector2d lo = truth.colwise().minCoeff().transpose(), hi = truth.colwise().maxCoeff().transpose();
-    auto nearest = [&](double u, double v) {
-      size_t best = 0;
-      for (size_t k = 0; k < loop.size(); ++k)
-        if ((truth.row(loop[k]).transpose() - Eigen::Vector2d(u, v)).norm() < (truth.row(loop[best]).transpose() - Eigen::Vector2d(u, v)).norm()) best = k;
-      return best;
-    };
-    const size_t corner[4] = {nearest(lo.x(), lo.y()), nearest(hi.x(), lo.y()), nearest(hi.x(), hi.y()), nearest(lo.x(), hi.y())};
-    std::vector<LabeledSegment> labels;
-    for (int side = 0; side < 4; ++side) {
-      LabeledSegment seg{static_cast<Side>(side), {}};
-      for (size_t k = corner[side];; k = (k + 1) % loop.size()) {
-        seg.vertices.push_back(loop[k]);
-        if (k == corner[(side + 1) % 4]) break;
-      }
-      labels.push_back(seg);
-    }
+    ASSERT_EQ(findMeshHoles(region).holes.size(), 1u);
+    const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
     const LabeledParameterization p = parameterizeLabeled(region, labels);
     Polygon2 boundary;
     for (int v : p.perimeter) boundary.push_back(p.uv.row(v).transpose());

@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include "fitting/labeled_parameterization.h"
+#include "mesh/mesh_holes.h"
 #include "mesh/triangle_mesh.h"
 
 namespace holefill::testregions {
@@ -39,6 +41,35 @@ inline TriangleMesh gridRegion(int nx, int ny, double h, const std::function<boo
   m.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
   for (size_t k = 0; k < tris.size(); ++k) m.triangles.row(static_cast<Eigen::Index>(k)) = tris[k].transpose();
   return m;
+}
+
+// Labels by the corpus's bounding-box rule (tests/corpus/labeled_regions.py): the corners are the
+// outer boundary vertices nearest the corners of the region's box in its true parameters `uv`;
+// S, E, N, W run between them anticlockwise, every boundary vertex labeled.
+inline std::vector<LabeledSegment> boundingBoxLabels(const TriangleMesh& region, const Eigen::MatrixX2d& uv) {
+  const MeshHoleReport holes = findMeshHoles(region);
+  size_t outer = 0;
+  for (size_t k = 1; k < holes.holes.size(); ++k)
+    if (holes.holes[k].length > holes.holes[outer].length) outer = k;
+  const std::vector<int>& loop = holes.holes.at(outer).loop;
+  const Eigen::Vector2d lo = uv.colwise().minCoeff().transpose(), hi = uv.colwise().maxCoeff().transpose();
+  auto nearest = [&](double u, double v) {
+    size_t best = 0;
+    for (size_t k = 0; k < loop.size(); ++k)
+      if ((uv.row(loop[k]).transpose() - Eigen::Vector2d(u, v)).norm() < (uv.row(loop[best]).transpose() - Eigen::Vector2d(u, v)).norm()) best = k;
+    return best;
+  };
+  const size_t corner[4] = {nearest(lo.x(), lo.y()), nearest(hi.x(), lo.y()), nearest(hi.x(), hi.y()), nearest(lo.x(), hi.y())};
+  std::vector<LabeledSegment> labels;
+  for (int side = 0; side < 4; ++side) {
+    LabeledSegment seg{static_cast<Side>(side), {}};
+    for (size_t k = corner[side];; k = (k + 1) % loop.size()) {
+      seg.vertices.push_back(loop[k]);
+      if (k == corner[(side + 1) % 4]) break;
+    }
+    labels.push_back(seg);
+  }
+  return labels;
 }
 
 }  // namespace holefill::testregions
