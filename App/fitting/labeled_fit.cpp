@@ -15,7 +15,16 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   LabeledFitResult r;
   r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
   const LabeledParameterization& p = r.parameterization;
-  if (o.extend) r.extension = extendToRectangle(region, p.uv, p.width, p.height, o.extension);
+  if (o.extend) {
+    // The extension continues the surface the map was made of (the region smoothed along the
+    // normal where it is noisy): continued from the noisy vertices, scan noise at the boundary was
+    // carried out into the extension, and the fit with it missed the data (median data max
+    // 1.1e-2 with the extension against 5.3e-3 without, on the corpus). The region's own vertices
+    // are then fitted where they are.
+    TriangleMesh smooth{p.mapped.rows() == region.vertices.rows() ? p.mapped : region.vertices, region.triangles};
+    r.extension = extendToRectangle(smooth, p.uv, p.width, p.height, o.extension);
+    r.extension.mesh.vertices.topRows(region.vertices.rows()) = region.vertices;
+  }
   auto fitWith = [&](const TensorFitOptions& fo) {
     return o.extend ? fitTensorProduct(r.extension.mesh.vertices, r.extension.uv, region, p.uv, fo)
                     : fitTensorProduct(region.vertices, p.uv, region, p.uv, fo);

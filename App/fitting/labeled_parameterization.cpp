@@ -340,7 +340,10 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
 LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
                                             const LabeledParameterizationOptions& o) {
   validateMesh(region, "region");
-  return parameterizeOriented(denoised(region, o.denoise), segments, o, true);
+  const TriangleMesh smooth = denoised(region, o.denoise);
+  LabeledParameterization p = parameterizeOriented(smooth, segments, o, true);
+  p.mapped = smooth.vertices;
+  return p;
 }
 
 namespace {

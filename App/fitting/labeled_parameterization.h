@@ -56,6 +56,7 @@ struct LabeledParameterization {
   Eigen::MatrixX2d uv;             // per mesh vertex; labeled vertices on the sides of [0, width] × [0, height]
   double width = 0, height = 0;    // the rectangle, after the optimised scale
   std::vector<int> perimeter;      // the outer boundary loop, anticlockwise in uv
+  Eigen::MatrixX3d mapped;         // the positions mapped: the region's, smoothed along the normal where it is noisy (denoise)
   GuidingFrame frame;
   int flippedTriangles = 0;        // in the returned map (0 unless even the start had some)
   double arapEnergy = 0;           // Σ cot-weighted |edge − rotated edge|², relative to Σ cot-weighted |edge|²
