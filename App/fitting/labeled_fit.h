@@ -18,7 +18,9 @@ struct LabeledFitOptions {
   DomainExtensionOptions extension;  // order 3 (G2) by default
   TensorFitOptions fit;  // fit.controlU × fit.controlV: the control points to start from
   bool extend = true;
-  // Control points chosen by the data: from fit.controlU × fit.controlV, refined by half again per
+  // Control points chosen by the data: from the larger of fit.controlU and fit.controlV along the
+  // rectangle's longer side and as many as keep the cells square along the other (4 at least),
+  // refined by half again per
   // direction while the region's data max exceeds `tolerance` (of its diagonal), up to maxControl
   // per direction. A refinement is undone, and ends the search, when it brings weak control
   // points or a condition of 1e8 or more, or does not cut the data RMS by a third (what is left is

@@ -71,7 +71,7 @@ import json, sys
 t = sys.argv[1]
 r = json.load(open(t + "/fit_refined.json"))
 assert r["control_points_u"] > 5 and len(r["refinements"]) >= 2, r
-assert r["refinements"][0].startswith("5x5"), r
+assert r["refinements"][0].startswith("5x4"), r  # cells start square: 6 x 3 units
 assert r["data_max"] < 1e-3 and r["weak_control_points"] == 0, r
 PY
 finish
