@@ -21,8 +21,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     // carried out into the extension, and the fit with it missed the data (median data max
     // 1.1e-2 with the extension against 5.3e-3 without, on the corpus). The region's own vertices
     // are then fitted where they are.
-    TriangleMesh smooth{p.mapped.rows() == region.vertices.rows() ? p.mapped : region.vertices, region.triangles};
-    r.extension = extendToRectangle(smooth, p.uv, p.width, p.height, o.extension);
+    r.extension = extendToRectangle(TriangleMesh{p.mapped, region.triangles}, p.uv, p.width, p.height, o.extension);
     r.extension.mesh.vertices.topRows(region.vertices.rows()) = region.vertices;
   }
   auto fitWith = [&](const TensorFitOptions& fo) {

@@ -75,8 +75,7 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
   for (int t = 0; t < tri.rows(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int v = tri(t, k), a = tri(t, (k + 1) % 3), b = tri(t, (k + 2) % 3);
-      const Eigen::Vector3d e1 = X.row(a) - X.row(v), e2 = X.row(b) - X.row(v);
-      angle[v] += std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+      angle[v] += angleBetween(X.row(a) - X.row(v), X.row(b) - X.row(v));
       if (turn == 0 && v == loop[0] && a == loop[1 % L]) turn = 1;
       if (turn == 0 && v == loop[1 % L] && a == loop[0]) turn = -1;
     }
@@ -85,17 +84,17 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
   for (int side = 0; side < 4; ++side) {
     std::vector<int>& sp = sidePerimeter[side];
     if (sp.size() < 3) continue;
-    // Develop the perimeter from the side's first vertex to its last.
-    std::map<int, Eigen::Vector2d> at;
+    // Develop the perimeter from the side's first vertex to its last; at[j]: the side's j-th vertex.
+    std::vector<Eigen::Vector2d> at(sp.size());
     Eigen::Vector2d q(0, 0);
     double heading = 0;
-    for (int i = sp.front();; i = (i + 1) % L) {
-      at[i] = q;
+    for (int i = sp.front(), j = 0;; i = (i + 1) % L) {
+      if (i == sp[j]) at[j++] = q;
       if (i == sp.back()) break;
       if (i != sp.front()) heading += turn * (M_PI - angle[loop[i]]);
       q += (X.row(loop[(i + 1) % L]) - X.row(loop[i])).norm() * Eigen::Vector2d(std::cos(heading), std::sin(heading));
     }
-    const Eigen::Vector2d chord = at[sp.back()] - at[sp.front()];
+    const Eigen::Vector2d chord = at.back() - at.front();
     if (!(chord.norm() > 0)) continue;
     // The supporting line's direction: the one, within 45° of the chord, along which the most of
     // the side (by length) lies within the depth of it. The chord alone tilts away from the side
@@ -107,7 +106,7 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
     // whose map was otherwise exact). The direction is the developed side's over ±2% of its
     // chord, so that scan noise on the boundary does not count.
     std::vector<double> cumulative(sp.size(), 0.0);
-    for (size_t j = 1; j < sp.size(); ++j) cumulative[j] = cumulative[j - 1] + (at[sp[j]] - at[sp[j - 1]]).norm();
+    for (size_t j = 1; j < sp.size(); ++j) cumulative[j] = cumulative[j - 1] + (at[j] - at[j - 1]).norm();
     std::vector<Eigen::Vector2d> direction(sp.size());
     for (size_t j = 0, lo = 0, hi = 0; j < sp.size(); ++j) {
       const double w = 0.02 * chord.norm();
@@ -115,7 +114,7 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
       while (hi + 1 < sp.size() && cumulative[hi + 1] - cumulative[j] <= w) ++hi;
       hi = std::max(hi, std::min(j + 1, sp.size() - 1));
       const size_t a = std::min(lo, j > 0 ? j - 1 : 0);
-      direction[j] = (at[sp[hi]] - at[sp[a]]).normalized();
+      direction[j] = (at[hi] - at[a]).normalized();
     }
     std::vector<int> kept;
     double bestLength = -1, bestTilt = 0;
@@ -124,13 +123,13 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
       const Eigen::Vector2d along(std::cos(a), std::sin(a));
       const Eigen::Vector2d outward = turn * Eigen::Vector2d(std::sin(a), -std::cos(a));
       double support = -std::numeric_limits<double>::infinity();
-      for (int i : sp) support = std::max(support, outward.dot(at[i]));
+      for (const Eigen::Vector2d& p : at) support = std::max(support, outward.dot(p));
       std::vector<int> in;
       double length = 0;
       for (size_t j = 0; j < sp.size(); ++j) {
-        if (support - outward.dot(at[sp[j]]) > depth * chord.norm()) continue;
+        if (support - outward.dot(at[j]) > depth * chord.norm()) continue;
         if (direction[j].dot(along) < std::cos(20 * M_PI / 180)) continue;
-        if (!in.empty() && in.back() == sp[j - 1]) length += (at[sp[j]] - at[sp[j - 1]]).norm();
+        if (!in.empty() && in.back() == sp[j - 1]) length += (at[j] - at[j - 1]).norm();
         in.push_back(sp[j]);
       }
       if (length > bestLength * (1 + 1e-9) || (length >= bestLength * (1 - 1e-9) && std::abs(k) < bestTilt)) {
@@ -152,14 +151,15 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
       for (size_t j = 1; j < sp.size(); ++j) edges.push_back(cumulative[j] - cumulative[j - 1]);
       std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
       const double w = std::max(0.03 * chord.norm(), 4 * edges[edges.size() / 2]);
-      auto turnAt = [&](size_t j) {  // the side's turn at j over ±w, radians (0 where the window is cut short)
+      std::vector<double> turnAt(sp.size(), 0.0);  // the side's turn at j over ±w, radians (0 where the window is cut short)
+      for (size_t j = 0; j < sp.size(); ++j) {
         size_t lo = j, hi = j;
         while (lo > 0 && cumulative[j] - cumulative[lo] < w) --lo;
         while (hi + 1 < sp.size() && cumulative[hi] - cumulative[j] < w) ++hi;
-        if (lo == j || hi == j) return 0.0;
-        const Eigen::Vector2d a = (at[sp[j]] - at[sp[lo]]).normalized(), b = (at[sp[hi]] - at[sp[j]]).normalized();
-        return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
-      };
+        if (lo == j || hi == j) continue;
+        const Eigen::Vector2d a = (at[j] - at[lo]).normalized(), b = (at[hi] - at[j]).normalized();
+        turnAt[j] = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+      }
       const double sharp = 30 * M_PI / 180;
       for (size_t j = 0; j < sp.size();) {
         if (keep[j]) {
@@ -169,7 +169,7 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
         size_t e = j;
         while (e < sp.size() && !keep[e]) ++e;  // [j, e) left free
         bool turns = false;
-        for (size_t q = j > 0 ? j - 1 : 0; q < std::min(e + 1, sp.size()) && !turns; ++q) turns = turnAt(q) > sharp;
+        for (size_t q = j > 0 ? j - 1 : 0; q < std::min(e + 1, sp.size()) && !turns; ++q) turns = turnAt[q] > sharp;
         if (!turns) {
           for (size_t q = j; q < e; ++q) keep[q] = 1;
         } else {
@@ -182,9 +182,9 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
             size_t best = end;
             double most = 0;
             for (size_t q = end; q > 0 && cumulative[end] - cumulative[q] < w; --q)
-              if (turnAt(q) > most) most = turnAt(q), best = q;
+              if (turnAt[q] > most) most = turnAt[q], best = q;
             for (size_t q = end; q < sp.size() && cumulative[q] - cumulative[end] < w; ++q)
-              if (turnAt(q) > most) most = turnAt(q), best = q;
+              if (turnAt[q] > most) most = turnAt[q], best = q;
             if (most <= sharp) continue;
             if (left) {
               for (size_t q = best + 1; q < e; ++q) keep[q] = 0;
@@ -210,9 +210,9 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
 
 // Whether the map's boundary loops cross themselves or each other: the map is not an embedding
 // then, though no triangle need be turned over.
-bool boundaryCrosses(const TriangleMesh& region, const Eigen::MatrixX2d& uv) {
+bool boundaryCrosses(const MeshHoleReport& boundary, const Eigen::MatrixX2d& uv) {
   std::vector<Polygon2> loops;
-  for (const MeshHole& h : findMeshHoles(region).holes) {
+  for (const MeshHole& h : boundary.holes) {
     loops.emplace_back();
     for (int v : h.loop) loops.back().push_back(uv.row(v).transpose());
   }
@@ -246,6 +246,7 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
   TriangleMesh out = region;
   if (rounds <= 0) return out;
   const MeshTopology topo(region);
+  const MeshHoleReport holes = findMeshHoles(region, topo);
   const Eigen::Index nv = region.vertices.rows();
   std::vector<std::vector<int>> ring(nv);
   for (const auto& e : topo.edges()) ring[e.a].push_back(e.b), ring[e.b].push_back(e.a);
@@ -255,28 +256,29 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
   // only. A clean boundary is left as it is: smoothed, its corners round off, and the map there
   // is no longer the region's (measured: 1.3e-4 → 4.6e-3 on a clean bitten cylinder).
   std::vector<std::array<int, 2>> along(nv, {-1, -1});
+  std::vector<char> boundary(nv, 0);
   std::vector<double> turns;
-  for (const MeshHole& h : findMeshHoles(region, topo).holes)
+  for (const MeshHole& h : holes.holes)
     for (size_t k = 0; k < h.loop.size(); ++k) {
       const int p = h.loop[(k + h.loop.size() - 1) % h.loop.size()], v = h.loop[k], q = h.loop[(k + 1) % h.loop.size()];
       along[v] = {p, q};
-      const Eigen::Vector3d a = region.vertices.row(v) - region.vertices.row(p), b = region.vertices.row(q) - region.vertices.row(v);
-      turns.push_back(std::atan2(a.cross(b).norm(), a.dot(b)));
+      boundary[v] = 1;
+      turns.push_back(angleBetween(region.vertices.row(v) - region.vertices.row(p), region.vertices.row(q) - region.vertices.row(v)));
     }
   if (!turns.empty()) {
     std::nth_element(turns.begin(), turns.begin() + turns.size() / 2, turns.end());
     if (turns[turns.size() / 2] <= 10 * M_PI / 180) std::fill(along.begin(), along.end(), std::array<int, 2>{-1, -1});
   }
-  Eigen::MatrixX3d& X = out.vertices;
-  auto vertexNormals = [&] {  // area-weighted, in the triangles' consistent orientation
-    Eigen::MatrixX3d normal = Eigen::MatrixX3d::Zero(nv, 3);
-    for (Eigen::Index t = 0; t < region.triangles.rows(); ++t) {
-      const Eigen::Vector3i f = region.triangles.row(t);
-      Eigen::RowVector3d n = (X.row(f[1]) - X.row(f[0])).cross(X.row(f[2]) - X.row(f[0]));
-      if (topo.flipped[t]) n = -n;
-      for (int k = 0; k < 3; ++k) normal.row(f[k]) += n;
-    }
-    return normal;
+  // The copy is smoothed with its triangles in their consistent orientation, so that the vertex
+  // normals do not cancel.
+  TriangleMesh work{region.vertices, region.triangles};
+  for (Eigen::Index t = 0; t < work.triangles.rows(); ++t)
+    if (topo.flipped[t]) std::swap(work.triangles(t, 1), work.triangles(t, 2));
+  Eigen::MatrixX3d& X = work.vertices;
+  auto umbrella = [&](Eigen::Index v) {  // the mean of the neighbours, less the vertex
+    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+    for (int u : ring[v]) mean += X.row(u);
+    return Eigen::RowVector3d(mean / static_cast<double>(ring[v].size()) - X.row(v));
   };
   // Only a noisy region is smoothed; a clean one is mapped as it is, exactly. Noise shows as
   // normal offsets that differ from vertex to vertex (curvature's are alike between
@@ -285,20 +287,13 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
   // third region of the corpus: at most 0.001 on the clean ones, 0.028–0.093 at 0.05% noise,
   // 0.08–0.22 at 0.2%; the threshold is 0.02.
   {
-    const Eigen::MatrixX3d normal = vertexNormals();
-    std::vector<char> boundary(nv, 0);
-    for (const MeshHole& h : findMeshHoles(region, topo).holes)
-      for (int v : h.loop) boundary[v] = 1;
+    const Eigen::MatrixX3d normal = vertexNormals(work);
     Eigen::VectorXd offset = Eigen::VectorXd::Zero(nv);
     double edge = 0;
     for (const auto& e : topo.edges()) edge += (X.row(e.a) - X.row(e.b)).norm();
     edge /= std::max<size_t>(1, topo.edges().size());
-    for (Eigen::Index v = 0; v < nv; ++v) {
-      if (ring[v].empty() || !(normal.row(v).norm() > 0)) continue;
-      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-      for (int u : ring[v]) mean += X.row(u);
-      offset[v] = (mean / static_cast<double>(ring[v].size()) - X.row(v)).dot(normal.row(v).normalized());
-    }
+    for (Eigen::Index v = 0; v < nv; ++v)
+      if (!ring[v].empty()) offset[v] = umbrella(v).dot(normal.row(v));
     std::vector<double> rough;
     for (Eigen::Index v = 0; v < nv; ++v) {
       if (boundary[v] || ring[v].empty()) continue;
@@ -311,17 +306,13 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
     if (rough[rough.size() / 2] < 0.02 * edge) return out;
   }
   for (int r = 0; r < 2 * rounds; ++r) {
-    const Eigen::MatrixX3d normal = vertexNormals();
+    const Eigen::MatrixX3d normal = vertexNormals(work);
     const double step = r % 2 == 0 ? 0.5 : -0.53;
     Eigen::MatrixX3d next = X;
     for (Eigen::Index v = 0; v < nv; ++v) {
-      const double len = normal.row(v).norm();
-      if (ring[v].empty() || !(len > 0)) continue;
-      const Eigen::RowVector3d n = normal.row(v) / len;
-      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-      for (int u : ring[v]) mean += X.row(u);
-      const Eigen::RowVector3d d = mean / static_cast<double>(ring[v].size()) - X.row(v);
-      next.row(v) += step * d.dot(n) * n;
+      if (ring[v].empty() || !(normal.row(v).norm() > 0)) continue;
+      const Eigen::RowVector3d n = normal.row(v);
+      next.row(v) += step * umbrella(v).dot(n) * n;
       if (along[v][0] >= 0) {
         const Eigen::RowVector3d a = X.row(along[v][0]), b = X.row(along[v][1]);
         const Eigen::RowVector3d tangent = (b - a).normalized();
@@ -332,6 +323,7 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
     }
     X = next;
   }
+  out.vertices = X;
   return out;
 }
 
@@ -454,10 +446,12 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     }
   }
   std::array<int, 4> releasedCount{};
+  bool anyReleased = false;
   if (o.releaseDepth >= 0) {
     releasedCount = releaseInwardStretches(region, tri, loop, sidePerimeter, o.releaseDepth);
     for (int side = 0; side < 4; ++side) {
       if (releasedCount[side] == 0) continue;
+      anyReleased = true;
       sides.points[side].clear();
       for (int i : sidePerimeter[side]) sides.points[side].push_back(region.vertices.row(loop[i]).transpose());
       out.warnings.push_back(std::to_string(releasedCount[side]) + " vertices of the " + sideName(static_cast<Side>(side)) +
@@ -683,17 +677,11 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
   // scan noise of a third of an edge does this to some) folds in every map; it is not the map's
   // fold, and counting it kept Tutte's start on the corpus's noisiest regions.
   {
-    Eigen::MatrixX3d vertexNormal = Eigen::MatrixX3d::Zero(nv, 3);
-    std::vector<Eigen::Vector3d> faceNormal(nt);
+    const Eigen::MatrixX3d vertexNormal = vertexNormals(TriangleMesh{region.vertices, tri});
     for (int t = 0; t < nt; ++t) {
       const Eigen::Vector3d a = region.vertices.row(tri(t, 0)), b = region.vertices.row(tri(t, 1)), c = region.vertices.row(tri(t, 2));
-      faceNormal[t] = (b - a).cross(c - a);
-      for (int k = 0; k < 3; ++k) vertexNormal.row(tri(t, k)) += faceNormal[t].transpose();
-    }
-    for (int t = 0; t < nt; ++t) {
-      Eigen::Vector3d around = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k) around += vertexNormal.row(tri(t, k)).transpose().normalized();
-      if (faceNormal[t].dot(around) < 0) pinnedFlat[t] = 1;
+      const Eigen::Vector3d around = vertexNormal.row(tri(t, 0)) + vertexNormal.row(tri(t, 1)) + vertexNormal.row(tri(t, 2));
+      if ((b - a).cross(c - a).dot(around) < 0) pinnedFlat[t] = 1;
     }
   }
   // Tutte's start also lays the ears of stretches left free flat along the rectangle; ARAP opens
@@ -711,15 +699,15 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     return n;
   };
   const int startFlips = flips(uv);
-  if (std::any_of(releasedCount.begin(), releasedCount.end(), [](int n) { return n > 0; }) &&
+  if (anyReleased &&
       std::any_of(target.begin(), target.end(), [](const Eigen::Vector2d& q) { return q.x() != 0 || q.y() != 0; })) {
     // With stretches left free, Tutte's start squeezes each onto the rectangle between its held
     // neighbours (an inner arc of 150 vertices onto a short piece of a side), and ARAP, stepping
     // back from every fold, does not open it in its rounds (measured: a crescent's horn shot out
     // of the rectangle). ARAP starts instead from the as-similar-as-possible map (Liu et al.
     // 2008; LSCM's energy): the same rows with a similarity a·I + b·J per triangle, unknown, so
-    // one linear solve gives a conformal map that opens the free stretches. Its scale is set by
-    // the similarities' mean a = 1. Kept when it turns no triangle over.
+    // one linear solve gives a conformal map that opens the free stretches. Kept when it turns no
+    // triangle over.
     const int ab = dimCol + 2;
     std::vector<Eigen::Triplet<double>> S;
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(row + 1);
@@ -822,7 +810,8 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
   out.width = goodDim[0];
   out.height = goodDim[1];
   const int lastFlips = flips(uv);
-  if (lastFlips > 0 && lastFlips <= std::max(2, nt / 100) && energy < 0.8 * goodEnergy && !boundaryCrosses(region, uv)) {
+  const bool lastCrosses = lastFlips > 0 && boundaryCrosses(holes, uv);
+  if (lastFlips > 0 && lastFlips <= std::max(2, nt / 100) && energy < 0.8 * goodEnergy && !lastCrosses) {
     // Scan noise on a held side can push a boundary vertex past its inner neighbour, and the
     // sliver between them folds in every map that holds the side; flip repair then kept an early
     // map (Tutte's start on most of the corpus's noisy regions, data max ten times the noise;
@@ -842,11 +831,9 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
                            " in Tutte's start)");
   } else if (lastFlips > 0) {
     out.warnings.push_back("ARAP folded " + std::to_string(lastFlips) + " of " + std::to_string(nt) + " triangles" +
-                           (boundaryCrosses(region, uv) ? " and its boundary crossed itself" : "") + "; the last unfolded map is kept");
+                           (lastCrosses ? " and its boundary crossed itself" : "") + "; the last unfolded map is kept");
   }
-  bool released = false;
-  for (int n : releasedCount) released = released || n > 0;
-  if (released) {
+  if (anyReleased) {
     // The map with every labeled vertex held, as labeled, is kept instead where leaving the
     // stretches free did not pay: they ran over each other or folded, or ARAP, started from a map
     // far from its own (a side of a strongly curved surface, whose development turns sharply),
@@ -854,7 +841,7 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     LabeledParameterizationOptions heldOptions = o;
     heldOptions.releaseDepth = -1;
     LabeledParameterization held = parameterizeOriented(region, segments, heldOptions, false);
-    const bool crosses = boundaryCrosses(region, out.uv);
+    const bool crosses = boundaryCrosses(holes, out.uv);
     if (crosses || !(out.arapEnergy < held.arapEnergy)) {
       char why[160];
       std::snprintf(why, sizeof why, "%s (ARAP energy %.3g against %.3g held)",
