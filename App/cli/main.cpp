@@ -522,7 +522,7 @@ int cmdFit(const Args& a) {
                 r.fit.surface.numU(), r.fit.surface.numV(), r.fit.dataMax, r.fit.dataRms, r.fit.weakControlPoints, r.fit.log10Condition,
                 r.fit.valid ? "valid" : "INVALID", r.seconds);
   }
-  for (const auto& w : r.parameterization.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  for (const auto& w : r.allWarnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   return r.parameterization.flippedTriangles > 0 || !r.fit.valid ? 3 : 0;
 }
 

@@ -34,6 +34,8 @@ struct LabeledFitResult {
   DomainExtension extension;         // empty when not extended
   TensorFitResult fit;
   std::vector<std::string> refinements;  // control points tried, with their data max, and why the search stopped
+  std::vector<std::string> warnings;     // the fit's own (an extension given up); allWarnings() adds the parameterization's
+  std::vector<std::string> allWarnings() const;
   double seconds = 0;
   std::string toJson() const;
 };

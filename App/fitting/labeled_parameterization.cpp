@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 
+#include "fitting/slim_descent.h"
 #include "geometry/error.h"
 #include "geometry/polygon2d.h"
 #include "mesh/mesh_holes.h"
@@ -710,7 +711,7 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     // triangle over.
     const int ab = dimCol + 2;
     std::vector<Eigen::Triplet<double>> S;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(row + 1);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(row + 2);
     int r = 0;
     for (const Term& term : terms) {
       const double sw = std::sqrt(term.w);
@@ -724,25 +725,32 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     }
     for (const auto& tr : T)
       if (tr.row() >= arapRows) S.push_back(tr);
-    // Its scale: W held at its start (or H, where no labeled vertex uses W); ARAP then frees it.
-    // (Holding the similarities' mean scale instead couples every triangle in one row, and the
-    // normal equations turn dense.)
+    // Its scale: W and H held at their starts, each that a labeled vertex uses; ARAP then frees
+    // them. (Holding only W, the similarities let H shrink: on a crescent whose inner arc was left
+    // free, H fell from 5.65 to 0.013, the held sides ran into one line and the map ballooned
+    // around it, 56 triangles turned over. Holding the similarities' mean scale instead couples
+    // every triangle in one row, and the normal equations turn dense.)
     bool uses[2] = {false, false};
     for (int i = 0; i < L; ++i)
       if (fixed[i])
         for (int c = 0; c < 2; ++c) uses[c] = uses[c] || target[i][c] != 0;
-    const int pinned = uses[0] ? 0 : 1;
+    if (!uses[0] && !uses[1]) uses[0] = true;
     double total = 0;
     for (const Term& term : terms) total += term.w;
     const double unit = std::sqrt(total);
     for (int c = 0; c < 2; ++c) rhs[holdRow + c] = hold * dim0[c];
-    S.emplace_back(row, dimCol + pinned, unit);
-    rhs[row] = unit * dim0[pinned];
-    Eigen::SparseMatrix<double> M(row + 1, ab + 2 * nt);
+    int pins = 0;
+    for (int c = 0; c < 2; ++c)
+      if (uses[c]) {
+        S.emplace_back(row + pins, dimCol + c, unit);
+        rhs[row + pins] = unit * dim0[c];
+        ++pins;
+      }
+    Eigen::SparseMatrix<double> M(row + pins, ab + 2 * nt);
     M.setFromTriplets(S.begin(), S.end());
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> asap(Eigen::SparseMatrix<double>(M.transpose() * M));
     if (asap.info() == Eigen::Success) {
-      const Eigen::VectorXd z = asap.solve(M.transpose() * rhs);
+      const Eigen::VectorXd z = asap.solve(M.transpose() * rhs.head(row + pins));
       Eigen::MatrixX2d m(nv, 2);
       for (int v = 0; v < nv; ++v)
         for (int c = 0; c < 2; ++c) m(v, c) = col[v][c] >= 0 ? z[col[v][c]] : z[dimCol + c] * target[at[v]][c] / dim0[c];
@@ -754,17 +762,16 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     }
   }
   double energy = 0, goodEnergy = std::numeric_limits<double>::infinity(), lastDim[2] = {W, H};
-  for (int it = 0; it < o.iterations; ++it) {
-    // Local: the rotation nearest to each triangle's current map.
+  // The local step: the rotation nearest to each triangle's map, as the global step's right side.
+  auto localStep = [&](const Eigen::MatrixX2d& m) {
     std::vector<Eigen::Matrix2d> R(nt, Eigen::Matrix2d::Zero());
-    for (const Term& term : terms) R[term.t] += term.w * (uv.row(term.i) - uv.row(term.j)).transpose() * term.x.transpose();
+    for (const Term& term : terms) R[term.t] += term.w * (m.row(term.i) - m.row(term.j)).transpose() * term.x.transpose();
     for (auto& r : R) {
       Eigen::JacobiSVD<Eigen::Matrix2d> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
       Eigen::Matrix2d D = Eigen::Matrix2d::Identity();
       D(1, 1) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
       r = svd.matrixU() * D * svd.matrixV().transpose();
     }
-    // Global: the least-squares uv and scale.
     Eigen::VectorXd b = Eigen::VectorXd::Zero(row);  // the frame rows' right side is 0
     for (int c = 0; c < 2; ++c) b[holdRow + c] = hold * dim0[c];
     int r = 0;
@@ -772,38 +779,101 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
       const Eigen::Vector2d e = R[term.t] * term.x;
       for (int c = 0; c < 2; ++c) b[r++] = std::sqrt(term.w) * e[c];
     }
-    Eigen::VectorXd z = solver.solve(A.transpose() * b);
-    if (!z.allFinite()) throw Error("the ARAP solve failed");
-    auto mapOf = [&](const Eigen::VectorXd& zz, Eigen::MatrixX2d& m) {
-      for (int v = 0; v < nv; ++v)
-        for (int c = 0; c < 2; ++c) m(v, c) = col[v][c] >= 0 ? zz[col[v][c]] : zz[dimCol + c] * target[at[v]][c] / dim0[c];
-    };
-    mapOf(z, uv);
-    if (flips(uv) > 0 && flips(good) == 0) {
-      // The global step overshot into a fold: step back towards the last map without folds (the
-      // unknowns, scale included, blended), halving until none is left (flip repair). Every
-      // accepted map is then a fold-free one, and the rotations of the next round come from it.
-      Eigen::VectorXd zGood(z.size());
-      for (int v = 0; v < nv; ++v)
-        for (int c = 0; c < 2; ++c)
-          if (col[v][c] >= 0) zGood[col[v][c]] = good(v, c);
-      zGood[dimCol] = goodDim[0], zGood[dimCol + 1] = goodDim[1];
-      Eigen::MatrixX2d mix(nv, 2);
-      for (double alpha = 0.5; alpha > 1e-3; alpha *= 0.5) {
-        const Eigen::VectorXd zm = zGood + alpha * (z - zGood);
-        mapOf(zm, mix);
-        if (flips(mix) == 0) {
-          z = zm;
-          uv = mix;
-          break;
+    return b;
+  };
+  auto mapOf = [&](const Eigen::VectorXd& zz, Eigen::MatrixX2d& m) {
+    for (int v = 0; v < nv; ++v)
+      for (int c = 0; c < 2; ++c) m(v, c) = col[v][c] >= 0 ? zz[col[v][c]] : zz[dimCol + c] * target[at[v]][c] / dim0[c];
+  };
+  auto unknownsOf = [&](const Eigen::MatrixX2d& m, const double dim[2]) {
+    Eigen::VectorXd zz(dimCol + 2);
+    for (int v = 0; v < nv; ++v)
+      for (int c = 0; c < 2; ++c)
+        if (col[v][c] >= 0) zz[col[v][c]] = m(v, c);
+    zz[dimCol] = dim[0], zz[dimCol + 1] = dim[1];
+    return zz;
+  };
+  auto arapRounds = [&](int rounds) {
+    for (int it = 0; it < rounds; ++it) {
+      // Local, then global: the least-squares uv and scale.
+      const Eigen::VectorXd b = localStep(uv);
+      Eigen::VectorXd z = solver.solve(A.transpose() * b);
+      if (!z.allFinite()) throw Error("the ARAP solve failed");
+      mapOf(z, uv);
+      if (flips(uv) > 0 && flips(good) == 0) {
+        // The global step overshot into a fold: step back towards the last map without folds (the
+        // unknowns, scale included, blended), halving until none is left (flip repair). Every
+        // accepted map is then a fold-free one, and the rotations of the next round come from it.
+        const Eigen::VectorXd zGood = unknownsOf(good, goodDim);
+        Eigen::MatrixX2d mix(nv, 2);
+        for (double alpha = 0.5; alpha > 1e-3; alpha *= 0.5) {
+          const Eigen::VectorXd zm = zGood + alpha * (z - zGood);
+          mapOf(zm, mix);
+          if (flips(mix) == 0) {
+            z = zm;
+            uv = mix;
+            break;
+          }
         }
       }
+      energy = (A * z - b).head(arapRows).squaredNorm() / reference;
+      lastDim[0] = z[dimCol], lastDim[1] = z[dimCol + 1];
+      if (flips(uv) == 0) good = uv, goodDim[0] = z[dimCol], goodDim[1] = z[dimCol + 1], out.arapEnergy = goodEnergy = energy;
+      // A fold in an early round that no step back avoids often opens again as the rotations
+      // settle: keep going, and keep the last map without folds.
     }
-    energy = (A * z - b).head(arapRows).squaredNorm() / reference;
-    lastDim[0] = z[dimCol], lastDim[1] = z[dimCol + 1];
-    if (flips(uv) == 0) good = uv, goodDim[0] = z[dimCol], goodDim[1] = z[dimCol + 1], out.arapEnergy = goodEnergy = energy;
-    // A fold in an early round that no step back avoids often opens again as the rotations
-    // settle: keep going, and keep the last map without folds.
+  };
+  arapRounds(o.iterations);
+  if (const int folded = flips(uv); folded > 0) {
+    // ARAP's rounds end folded (where a stretch left free meets a held side, measured on the
+    // corpus: 12 slivers on a clean B-spline region, whose fit then missed by 6.7e-2; or every
+    // round folds and the last map without folds is Tutte's start, a crescent's inner arc laid
+    // along a side). The last map without folds is then relaxed by SLIM (slim_descent.h), whose
+    // steps stop short of turning a triangle over: the same labeled vertices held, the rectangle's
+    // width and height free, ears and triangles turned over in the input left out; triangles that
+    // map flat (a free stretch laid along a side by Tutte's start), which the barrier cannot weigh,
+    // are weighed by ARAP's energy instead, and the result must have none folded. ARAP then goes on from it, its steps
+    // held back to maps without folds as before.
+    SlimProblem sp;
+    sp.triangles = tri;
+    sp.rest = restShapes(region.vertices, tri);
+    sp.skip = pinnedFlat;
+    sp.soft.assign(nt, 0);
+    for (int t = 0; t < nt; ++t) sp.soft[t] = !(signedArea(good, tri.row(t).transpose()) > 0);
+    std::vector<Eigen::Triplet<double>> M;
+    for (int v = 0; v < nv; ++v)
+      for (int c = 0; c < 2; ++c) {
+        if (col[v][c] >= 0) M.emplace_back(2 * v + c, col[v][c], 1.0);
+        else if (target[at[v]][c] != 0) M.emplace_back(2 * v + c, dimCol + c, target[at[v]][c] / dim0[c]);
+      }
+    sp.map.resize(2 * nv, dimCol + 2);
+    sp.map.setFromTriplets(M.begin(), M.end());
+    try {
+      const SlimResult relaxed = slimDescent(sp, unknownsOf(good, goodDim));
+      Eigen::MatrixX2d m(nv, 2);
+      mapOf(relaxed.z, m);
+      if (flips(m) == 0 && !boundaryCrosses(holes, m)) {
+        good = uv = m;
+        goodDim[0] = relaxed.z[dimCol], goodDim[1] = relaxed.z[dimCol + 1];
+        out.arapEnergy = goodEnergy = energy = (A * relaxed.z - localStep(m)).head(arapRows).squaredNorm() / reference;
+        const double relaxedEnergy = goodEnergy;
+        arapRounds(o.iterations);
+        if (boundaryCrosses(holes, good)) {
+          // ARAP's steps keep triangles from turning over, not the free boundary from running over
+          // itself: the relaxed map is kept then.
+          good = m;
+          goodDim[0] = relaxed.z[dimCol], goodDim[1] = relaxed.z[dimCol + 1];
+          out.arapEnergy = goodEnergy = relaxedEnergy;
+        }
+        uv = good;
+        energy = goodEnergy;
+        lastDim[0] = goodDim[0], lastDim[1] = goodDim[1];
+        out.warnings.push_back("ARAP folded " + std::to_string(folded) + " of " + std::to_string(nt) +
+                               " triangles; the map was relaxed without folds instead (SLIM)");
+      }
+    } catch (const Error&) {
+      // No triangle left to weigh: the map is left as ARAP ended it.
+    }
   }
   out.uv = good;
   out.flippedTriangles = flips(good);
