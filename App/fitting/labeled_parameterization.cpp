@@ -330,6 +330,50 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
 
 }  // namespace
 
+namespace {
+
+// A side's points for its guiding-frame curve (mesh-extension.md sec. 4.1): its labeled vertices in
+// running order and, across each gap between two of them (unlabeled vertices between two
+// segments of the side, or a stretch left free), the paper's arc: the cubic Hermite curve from
+// the one segment's end to the other's start with their end tangents, each as long as the
+// distance between the two ends, sampled as densely as the gap's own vertices. Without it the
+// frame's curve spans the gap by its bending term alone. `at[j]`: the frame point of side vertex j.
+std::vector<Eigen::Vector3d> sidePointsWithArcs(const Eigen::MatrixX3d& x, const std::vector<int>& loop, const std::vector<int>& side,
+                                                std::vector<int>& at) {
+  const int L = static_cast<int>(loop.size());
+  std::vector<Eigen::Vector3d> pts;
+  at.assign(side.size(), -1);
+  auto point = [&](int i) { return Eigen::Vector3d(x.row(loop[((i % L) + L) % L]).transpose()); };
+  for (size_t j = 0; j < side.size(); ++j) {
+    if (j > 0) {
+      const int a = side[j - 1], b = side[j], gap = ((b - a) % L + L) % L - 1;
+      if (gap > 0) {
+        // The ends' tangents over up to three edges of each segment (one edge is noise on a scan).
+        int back = 0, ahead = 0;
+        while (back < 3 && j - 1 >= static_cast<size_t>(back) + 1 && ((side[j - 1 - back] - side[j - 2 - back]) % L + L) % L == 1) ++back;
+        while (ahead < 3 && j + ahead + 1 < side.size() && ((side[j + ahead + 1] - side[j + ahead]) % L + L) % L == 1) ++ahead;
+        const Eigen::Vector3d p0 = point(a), p1 = point(b);
+        const double span = (p1 - p0).norm();
+        Eigen::Vector3d m0 = back > 0 ? Eigen::Vector3d(p0 - point(side[j - 1 - back])) : Eigen::Vector3d(p1 - p0);
+        Eigen::Vector3d m1 = ahead > 0 ? Eigen::Vector3d(point(side[j + ahead]) - p1) : Eigen::Vector3d(p1 - p0);
+        if (m0.norm() > 0 && m1.norm() > 0 && span > 0) {
+          m0 *= span / m0.norm();
+          m1 *= span / m1.norm();
+          for (int k = 1; k <= gap; ++k) {
+            const double t = static_cast<double>(k) / (gap + 1), t2 = t * t, t3 = t2 * t;
+            pts.push_back((2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * p1 + (t3 - t2) * m1);
+          }
+        }
+      }
+    }
+    at[j] = static_cast<int>(pts.size());
+    pts.push_back(point(side[j]));
+  }
+  return pts;
+}
+
+}  // namespace
+
 LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
                                             const LabeledParameterizationOptions& o) {
   validateMesh(region, "region");
@@ -441,10 +485,7 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
   for (size_t k = 0; k < order.size(); ++k) {
     const size_t s = order[(start + k) % order.size()];
     const int side = spans[s].second;
-    for (int i : ordered[s]) {
-      sides.points[side].push_back(region.vertices.row(loop[i]).transpose());
-      sidePerimeter[side].push_back(i);
-    }
+    for (int i : ordered[s]) sidePerimeter[side].push_back(i);
   }
   std::array<int, 4> releasedCount{};
   bool anyReleased = false;
@@ -453,12 +494,12 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     for (int side = 0; side < 4; ++side) {
       if (releasedCount[side] == 0) continue;
       anyReleased = true;
-      sides.points[side].clear();
-      for (int i : sidePerimeter[side]) sides.points[side].push_back(region.vertices.row(loop[i]).transpose());
       out.warnings.push_back(std::to_string(releasedCount[side]) + " vertices of the " + sideName(static_cast<Side>(side)) +
                              " side lie inside the line supporting it (a notch, slot, concave arc or rounded corner): left free");
     }
   }
+  std::array<std::vector<int>, 4> frameIndex;  // where each of a side's perimeter points sits among its frame points
+  for (int side = 0; side < 4; ++side) sides.points[side] = sidePointsWithArcs(region.vertices, loop, sidePerimeter[side], frameIndex[side]);
   out.frame = fitGuidingFrame(sides, o.frame);
   const GuidingFrame& f = out.frame;
   auto len = [&](Side s) { return f.labeled[static_cast<int>(s)] ? curveLength(f, s) : -1.0; };
@@ -496,7 +537,7 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     if (sp.empty()) continue;
     std::vector<double>& t = along[side];
     for (size_t j = 0; j < sp.size(); ++j)
-      t.push_back(curveLength(f, static_cast<Side>(side), f.parameters[side][j]) / curveLength(f, static_cast<Side>(side)));
+      t.push_back(curveLength(f, static_cast<Side>(side), f.parameters[side][frameIndex[side][j]]) / curveLength(f, static_cast<Side>(side)));
     // Corners sit at the side's ends whatever their projection.
     if ((sidesAt[sp.front()] & ~(1 << side)) != 0) t.front() = 0;
     if ((sidesAt[sp.back()] & ~(1 << side)) != 0) t.back() = 1;
@@ -887,8 +928,11 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
     // map (Tutte's start on most of the corpus's noisy regions, data max ten times the noise;
     // measured: 47 of 9,993 triangles folded at 0.2% noise, ARAP energy 0.026 against the start's
     // far larger). The converged map is kept when its folds are such slivers: at most 1% of the
-    // triangles, its boundary simple.
-    out.warnings.push_back(std::to_string(lastFlips) + " sliver triangles stay folded (scan noise at the boundary); the converged map is kept");
+    // triangles, its boundary simple. (SLIM, tried first, had left some of them folded too, or run
+    // its free boundary over itself; on clean regions such slivers sit where a free stretch meets
+    // a held side.)
+    out.warnings.push_back(std::to_string(lastFlips) +
+                           " sliver triangles stay folded at the boundary (scan noise, or a free stretch meeting a held side); the converged map is kept");
     out.uv = uv;
     out.flippedTriangles = lastFlips;
     out.arapEnergy = energy;

@@ -11,7 +11,9 @@
 // point), band deviation truth→fit and fit→truth (max), weak control points (support holding
 // fewer than 3 of the points the method fitted, at the parameters it fitted them), log10
 // condition number of the unsmoothed normal matrix at those parameters, time. Writes curvature
-// pictures of the untrimmed surfaces of two cases. Prints Markdown tables.
+// pictures of the untrimmed surfaces of two cases. Prints Markdown tables. With --corpus, the same
+// measures over the labeled-region corpus, adding the paper's unlabeled comparison (plane
+// parameters + G2 extension) and approxSurface on every region.
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_2.h>
@@ -39,7 +41,9 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
+#include "fitting/domain_extension.h"
 #include "fitting/labeled_fit.h"
 #include "geometry/spd_condition.h"
 #include "geometry/bspline_basis.h"
@@ -405,7 +409,8 @@ void curvaturePicture(const BSplineSurface& s, const std::string& path, const st
 
 // The fitters that need no FreeCAD, on one region: 0 labeled + G2 extension, 1 labeled without
 // extension, 2 least squares on the best-fit plane's parameters, 3 the same with thin plate 1e-4,
-// 4 labeled + G2 extension with the paper's mesh fairness E_Mesh at 1e-2; 12 x 12 cubic control points. fittedUV: the parameters each fitted point got.
+// 4 labeled + G2 extension with the paper's mesh fairness E_Mesh at 1e-2, 5 unlabeled: plane
+// parameters + G2 extension; 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each fitted point got.
 BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV) {
   if (method <= 1 || method == 4) {
     LabeledFitOptions o;
@@ -415,6 +420,18 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
     fittedUV = method != 1 ? r.extension.uv : r.parameterization.uv;
     return r.fit.surface;
+  }
+  if (method == 5) {
+    // The paper's comparison without labels (mesh-extension.md Figs. 8b/9b): the best-fit plane's
+    // parameters, the region extended to their bounding rectangle at G2, the same fit.
+    Eigen::MatrixX2d uv = planeParameters(mesh.vertices);
+    const Eigen::RowVector2d lo = uv.colwise().minCoeff();
+    uv.rowwise() -= lo;
+    const DomainExtension e = extendToRectangle(mesh, uv, uv.col(0).maxCoeff(), uv.col(1).maxCoeff());
+    TensorFitOptions o;
+    o.controlU = o.controlV = kControl;
+    fittedUV = e.uv;
+    return fitTensorProduct(e.mesh.vertices, e.uv, mesh, uv, o).surface;
   }
   const Eigen::MatrixX2d uv = planeParameters(mesh.vertices);
   TensorFitOptions o;
@@ -437,12 +454,40 @@ std::vector<Eigen::Vector3d> readPoints(const std::string& path) {
 // thin plate), 12 x 12 control points each. Per region: data max against the input (noisy) points
 // and against the noise-free truth at the same vertices, band deviation truth -> fit (max over
 // the truth's points in the band around the region), weak control points, condition, time.
-int runCorpus(const std::string& corpus, const std::string& indexPath) {
+int runCorpus(const std::string& corpus, const std::string& indexPath, const std::string& approxScript) {
   const JsonValue index = parseJson(readFileBytes(indexPath), indexPath);
   const JsonValue* regions = index.find("regions");
   if (!regions) throw Error(indexPath + " has no regions");
   const std::vector<std::string> methods = {"labeled + G2 extension", "labeled, no extension", "least squares (plane param.)",
-                                            "least squares + thin plate 1e-4", "labeled + G2 extension + E_Mesh 1e-2"};
+                                            "least squares + thin plate 1e-4", "labeled + G2 extension + E_Mesh 1e-2",
+                                            "unlabeled + G2 extension (plane param.)", "approxSurface (default smoothing)",
+                                            "approxSurface (no smoothing)"};
+  // The peer, FreeCAD's ReverseEngineering.approxSurface, in one freecadcmd run over every
+  // region's vertices (12 x 12 poles, with its default smoothing and without), written out first.
+  const std::string peerDir = "/tmp/holefill_bench_corpus_" + std::to_string(static_cast<long>(getpid()));
+  std::map<std::string, double> peerSeconds;
+  if (!approxScript.empty()) {
+    std::system(("mkdir -p '" + peerDir + "'").c_str());
+    int count = 0;
+    for (const JsonValue& r : regions->array) {
+      std::ofstream f(peerDir + "/case" + std::to_string(count++) + ".xyz");
+      try {
+        const TriangleMesh m = readMesh(corpus + "/" + r.find("id")->string + "/region.obj");
+        f.precision(17);
+        for (Eigen::Index v = 0; v < m.vertices.rows(); ++v) f << m.vertices(v, 0) << ' ' << m.vertices(v, 1) << ' ' << m.vertices(v, 2) << '\n';
+      } catch (const std::exception&) {
+      }
+    }
+    const std::string cmd = "freecadcmd -c \"import sys; sys.argv=['approx', '" + peerDir + "', '" + std::to_string(count) + "', '" +
+                            std::to_string(kControl) + "']; exec(open('" + approxScript + "').read())\" > '" + peerDir + "/approx.log' 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::ifstream f(peerDir + "/approx_times.txt");
+    std::string key;
+    double sec;
+    while (f >> key >> sec) peerSeconds[key] = sec;
+    if (rc != 0 || peerSeconds.empty()) std::fprintf(stderr, "approxSurface run failed (see %s/approx.log)\n", peerDir.c_str());
+  }
+  int regionNumber = -1;
   struct Row {
     std::string id, shape, labels;
     double noise;
@@ -455,6 +500,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
     const std::string dir = corpus + "/" + id;
     const JsonValue* labelKind = r.find("labels");
     Row row{id, r.find("shape")->string, labelKind ? labelKind->string : "bbox", r.find("noise")->number, {}, {}};
+    ++regionNumber;
     TriangleMesh mesh;
     std::vector<LabeledSegment> labels;
     std::vector<Eigen::Vector3d> band, truth;
@@ -475,12 +521,33 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
       try {
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
-        const BSplineSurface s = fitBy(mi, mesh, labels, fittedUV);
-        m.seconds = seconds(t0);
+        BSplineSurface s;
+        if (mi <= 5) {
+          s = fitBy(mi, mesh, labels, fittedUV);
+          m.seconds = seconds(t0);
+        } else {
+          const std::string key = "case" + std::to_string(regionNumber) + (mi == 6 ? "_smooth" : "_raw");
+          TopoDS_Shape shape;
+          BRep_Builder b;
+          if (!peerSeconds.count(key) || !BRepTools::Read(shape, (peerDir + "/" + key + ".brep").c_str(), b)) throw Error("approxSurface gave no surface");
+          TopExp_Explorer ex(shape, TopAbs_FACE);
+          if (!ex.More()) throw Error("approxSurface gave no face");
+          s = fromOcct(GeomConvert::SurfaceToBSplineSurface(BRep_Tool::Surface(TopoDS::Face(ex.Current()))));
+          m.seconds = peerSeconds[key];
+          // Its points' parameters are its own: the seeds for closest points come from the grid.
+          fittedUV.resize(0, 2);
+        }
         if (!s.poles.allFinite()) throw Error("non-finite control points");
         std::vector<Eigen::Vector3d> data;
         for (Eigen::Index v = 0; v < P.rows(); ++v) data.push_back(P.row(v).transpose());
-        // The region's vertices come first among the fitted points, in order.
+        // The region's vertices come first among the fitted points, in order; the peer's are the
+        // data's closest points on its surface.
+        if (fittedUV.rows() == 0) {
+          std::vector<Eigen::Vector2d> puv;
+          distancesTo(s, data, &puv);
+          fittedUV.resize(static_cast<Eigen::Index>(puv.size()), 2);
+          for (size_t k = 0; k < puv.size(); ++k) fittedUV.row(static_cast<Eigen::Index>(k)) = puv[k].transpose();
+        }
         const Eigen::MatrixX2d own = fittedUV.topRows(std::min<Eigen::Index>(fittedUV.rows(), P.rows()));
         for (double d : distancesTo(s, data, nullptr, &own)) m.dataMax = std::max(m.dataMax, d / diagonal);
         for (double d : distancesTo(s, truth, nullptr, &own)) truthMax = std::max(truthMax, d / diagonal);
@@ -547,13 +614,15 @@ int runCorpus(const std::string& corpus, const std::string& indexPath) {
   for (const Row& r : rows)
     for (size_t mi = 0; mi < methods.size(); ++mi)
       if (r.m[mi].failed) std::printf("failed: %s, %s: %s\n", r.id.c_str(), methods[mi].c_str(), r.m[mi].why.c_str());
+  if (!approxScript.empty()) std::system(("rm -rf '" + peerDir + "'").c_str());
   return 0;
 }
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--corpus") {
     try {
-      return runCorpus(argc > 2 ? argv[2] : "corpus-out/fit", argc > 3 ? argv[3] : "tests/corpus/labeled_regions_index.json");
+      return runCorpus(argc > 2 ? argv[2] : "corpus-out/fit", argc > 3 ? argv[3] : "tests/corpus/labeled_regions_index.json",
+                       argc > 4 ? argv[4] : "tests/bench/approx_surface.py");
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s\n", e.what());
       return 1;
