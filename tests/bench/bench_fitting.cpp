@@ -288,6 +288,17 @@ void supportAndCondition(const BSplineSurface& s, const Eigen::MatrixX2d& uv, Me
   m.log10Cond = log10Condition(N);
 }
 
+// The surface approxSurface wrote for `key` (KEY.brep in `dir`), as a B-spline; an Error where
+// the peer gave none (its time is missing from `seconds`).
+BSplineSurface peerSurface(const std::string& dir, const std::string& key, const std::map<std::string, double>& seconds) {
+  TopoDS_Shape shape;
+  BRep_Builder b;
+  if (!seconds.count(key) || !BRepTools::Read(shape, (dir + "/" + key + ".brep").c_str(), b)) throw Error("approxSurface gave no surface");
+  TopExp_Explorer ex(shape, TopAbs_FACE);
+  if (!ex.More()) throw Error("approxSurface gave no face");
+  return fromOcct(GeomConvert::SurfaceToBSplineSurface(BRep_Tool::Surface(TopoDS::Face(ex.Current()))));
+}
+
 // Distances from points to a surface by closest point: Newton per point from the nearest of a
 // coarse grid on the surface and, where `known` gives the parameters the point was fitted at, from
 // those too; the nearer of the two. Grid-seeded alone, Newton stopped at a corner of the domain
@@ -527,12 +538,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
           m.seconds = seconds(t0);
         } else {
           const std::string key = "case" + std::to_string(regionNumber) + (mi == 6 ? "_smooth" : "_raw");
-          TopoDS_Shape shape;
-          BRep_Builder b;
-          if (!peerSeconds.count(key) || !BRepTools::Read(shape, (peerDir + "/" + key + ".brep").c_str(), b)) throw Error("approxSurface gave no surface");
-          TopExp_Explorer ex(shape, TopAbs_FACE);
-          if (!ex.More()) throw Error("approxSurface gave no face");
-          s = fromOcct(GeomConvert::SurfaceToBSplineSurface(BRep_Tool::Surface(TopoDS::Face(ex.Current()))));
+          s = peerSurface(peerDir, key, peerSeconds);
           m.seconds = peerSeconds[key];
           // Its points' parameters are its own: the seeds for closest points come from the grid.
           fittedUV.resize(0, 2);
@@ -699,13 +705,7 @@ int main(int argc, char** argv) {
           }
         } else {
           const std::string key = "case" + std::to_string(k) + (mi == 4 ? "_smooth" : "_raw");
-          TopoDS_Shape shape;
-          BRep_Builder b;
-          if (!peerSeconds.count(key) || !BRepTools::Read(shape, (out + "/" + key + ".brep").c_str(), b)) throw Error("approxSurface gave no surface");
-          TopExp_Explorer ex(shape, TopAbs_FACE);
-          if (!ex.More()) throw Error("approxSurface gave no face");
-          const Handle(Geom_BSplineSurface) g = GeomConvert::SurfaceToBSplineSurface(BRep_Tool::Surface(TopoDS::Face(ex.Current())));
-          s = fromOcct(g);
+          s = peerSurface(out, key, peerSeconds);
           m.seconds = peerSeconds[key];
           std::vector<Eigen::Vector3d> data;
           for (Eigen::Index v = 0; v < P.rows(); ++v) data.push_back(P.row(v).transpose());

@@ -35,6 +35,20 @@ Eigen::SparseMatrix<double> freeMap(int nv, std::vector<int>& unknownOf) {
   return m;
 }
 
+// The problem over an n × n grid whose vertices sit at x (rest shapes from there) and start at
+// `start` (stacked u, v per vertex), free as in freeMap; z0: the start's unknowns.
+SlimProblem gridProblem(int n, const Eigen::MatrixX3d& x, const Eigen::VectorXd& start, Eigen::VectorXd& z0, std::vector<int>& unknownOf) {
+  SlimProblem p;
+  p.triangles = gridTriangles(n);
+  p.rest = restShapes(x, p.triangles);
+  p.skip.assign(p.triangles.rows(), 0);
+  p.map = freeMap(static_cast<int>(x.rows()), unknownOf);
+  z0.resize(p.map.cols());
+  for (size_t r = 0; r < unknownOf.size(); ++r)
+    if (unknownOf[r] >= 0) z0[unknownOf[r]] = start[static_cast<Eigen::Index>(r)];
+  return p;
+}
+
 }  // namespace
 
 TEST(SlimDescent, ASquashedMapOfACylinderPatchOpensToItsDevelopmentWithoutEverFolding) {
@@ -49,15 +63,9 @@ TEST(SlimDescent, ASquashedMapOfACylinderPatchOpensToItsDevelopmentWithoutEverFo
       x.row(j * (n + 1) + i) << u, std::sin(a), 1 - std::cos(a);
       start.segment<2>(2 * (j * (n + 1) + i)) << u, 0.2 * double(j) / n;
     }
-  SlimProblem p;
-  p.triangles = gridTriangles(n);
-  p.rest = restShapes(x, p.triangles);
-  p.skip.assign(p.triangles.rows(), 0);
   std::vector<int> unknownOf;
-  p.map = freeMap(nv, unknownOf);
-  Eigen::VectorXd z0(p.map.cols());
-  for (int r = 0; r < 2 * nv; ++r)
-    if (unknownOf[r] >= 0) z0[unknownOf[r]] = start[r];
+  Eigen::VectorXd z0;
+  const SlimProblem p = gridProblem(n, x, start, z0, unknownOf);
   SlimOptions o;
   o.stop = 1e-12;
   o.iterations = 200;
@@ -102,15 +110,11 @@ TEST(SlimDescent, AStartWithATriangleTurnedOverIsRefused) {
   Eigen::MatrixX3d x(nv, 3);
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) x.row(j * 3 + i) << i, j, 0;
-  SlimProblem p;
-  p.triangles = gridTriangles(n);
-  p.rest = restShapes(x, p.triangles);
-  p.skip.assign(p.triangles.rows(), 0);
+  Eigen::VectorXd start(2 * nv);
+  for (int r = 0; r < 2 * nv; ++r) start[r] = x(r / 2, r % 2);
   std::vector<int> unknownOf;
-  p.map = freeMap(nv, unknownOf);
-  Eigen::VectorXd z0(p.map.cols());
-  for (int r = 0; r < 2 * nv; ++r)
-    if (unknownOf[r] >= 0) z0[unknownOf[r]] = x(r / 2, r % 2);
+  Eigen::VectorXd z0;
+  SlimProblem p = gridProblem(n, x, start, z0, unknownOf);
   z0[unknownOf[2 * 4]] = 3.0;  // the middle vertex pulled out past the right side
   EXPECT_THROW(slimDescent(p, z0), Error);
   // Left out, the triangles it turns over do not count: the rest descends.
