@@ -81,7 +81,7 @@ const char* kUsage =
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension G1|G2|none]\n"
-    "                [--margin M] [--fairness W] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
+    "                [--margin M] [--fairness W] [--isocurves grid|paper] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
     "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; control points refined from 12x12 up to N (40) per\n"
     "                direction while the data max exceeds T (1e-3 of the diagonal; --ctrl alone: exactly those);\n"
@@ -498,6 +498,9 @@ int cmdFit(const Args& a) {
   else if (ext == "none") o.extend = false;
   else throw Error("--extension must be G1, G2 or none, got '" + ext + "'");
   if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
+  const std::string iso = a.get("--isocurves", "grid");
+  if (iso == "paper") o.extension.paperIsocurves = true;
+  else if (iso != "grid") throw Error("--isocurves must be grid or paper, got '" + iso + "'");
   const auto weight = [&](const char* flag, double& into) {
     if (!a.has(flag)) return;
     into = number(a.get(flag), flag);

@@ -7,6 +7,7 @@
 #include <Eigen/Sparse>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "geometry/error.h"
 #include "geometry/polygon2d.h"
@@ -325,6 +326,10 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     // leaves the system singular do they get third differences (zero on quadratics only), and
     // then second differences (which pull every curved surface flat).
     static const std::vector<std::vector<double>> diff = {{}, {}, {1, -2, 1}, {1, -3, 3, -1}, {1, -4, 6, -4, 1}};
+    // The paper's isocurves: grid columns (fixed i) and rows (fixed j) on the domain's boundary
+    // and nearest the rectangle's sides u = 0, width and v = 0, height.
+    std::set<int> isoU = {0, cu, static_cast<int>(std::lround((0 - out.u0) / hu)), static_cast<int>(std::lround((width - out.u0) / hu))};
+    std::set<int> isoV = {0, cv, static_cast<int>(std::lround((0 - out.v0) / hv)), static_cast<int>(std::lround((height - out.v0) / hv))};
     const auto gridLineDifferences = [&](int lowest) {
       std::vector<Eigen::Triplet<double>> Ft;
       int frow = 0;
@@ -336,10 +341,23 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
             if (it == freshAt.end()) break;
             run.push_back(it->second);
           }
-          int order = o.order + 1;
+          int top = o.order + 1;
+          if (o.paperIsocurves) {
+            // Runs off the paper's isocurves are kept only where they reach into the padding.
+            bool padding = false;
+            for (int q = 0; q < static_cast<int>(run.size()); ++q) {
+              const int i = ij.first + (dir == 0 ? q : 0), j = ij.second + (dir == 1 ? q : 0);
+              padding = padding || i < 0 || i > cu || j < 0 || j > cv;
+            }
+            const int line = dir == 0 ? ij.second : ij.first;
+            const bool isocurve = dir == 0 ? isoV.count(line) > 0 : isoU.count(line) > 0;
+            if (!padding && !isocurve) continue;
+            if (!padding) top = o.order;
+          }
+          int order = top;
           while (order >= lowest && static_cast<int>(run.size()) < order + 1) --order;
           if (order < lowest) continue;
-          if (order < o.order + 1) {  // only where the longer stencil does not fit along this line at all
+          if (order < top) {  // only where the longer stencil does not fit along this line at all
             const auto before = freshAt.find({ij.first - (dir == 0 ? 1 : 0), ij.second - (dir == 1 ? 1 : 0)});
             if (before != freshAt.end()) continue;  // this run's start is inside a line already covered
           }

@@ -26,6 +26,10 @@ struct DomainExtensionOptions {
   int marginLayers = 0;    // grid layers added around the rectangle
   int order = 3;           // k of Δᵏx = 0: 2 (G1) or 3 (G2)
   double fairness = 1e-2;  // weight of the (k+1)-th differences along the new grid lines, relative to Δᵏ's
+  // The paper's isocurve fairness instead (sec. 5.2.2.1): k-th differences along the extension's
+  // four boundaries and the isocurves through the rectangle's (labeled) sides only, at the same
+  // weight; the grid lines of the padding beyond the domain keep theirs. For comparison.
+  bool paperIsocurves = false;
   // Weight holding the region's vertices within k rings of its boundary to their places, relative
   // to Δᵏ's (0: fixed exactly, the paper's choice); below 1, scan noise is not amplified outward.
   double boundaryFidelity = 1e-3;

@@ -421,15 +421,17 @@ void curvaturePicture(const BSplineSurface& s, const std::string& path, const st
 // The fitters that need no FreeCAD, on one region: 0 labeled + G2 extension, 1 labeled without
 // extension, 2 least squares on the best-fit plane's parameters, 3 the same with thin plate 1e-4,
 // 4 labeled + G2 extension with the paper's mesh fairness E_Mesh at 1e-2, 5 unlabeled: plane
-// parameters + G2 extension; 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each fitted point got.
+// parameters + G2 extension, 8 labeled + G2 extension with the paper's isocurve fairness (6 and 7
+// are approxSurface, run elsewhere); 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each fitted point got.
 BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV) {
-  if (method <= 1 || method == 4) {
+  if (method <= 1 || method == 4 || method == 8) {
     LabeledFitOptions o;
     o.fit.controlU = o.fit.controlV = kControl;
     o.extend = method != 1;
     if (method == 4) o.extension.meshFairness = 1e-2;
+    o.extension.paperIsocurves = method == 8;
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
-    fittedUV = method != 1 ? r.extension.uv : r.parameterization.uv;
+    fittedUV = r.extension.uv.rows() > 0 ? r.extension.uv : r.parameterization.uv;  // no extension, or one given up
     return r.fit.surface;
   }
   if (method == 5) {
@@ -472,7 +474,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
   const std::vector<std::string> methods = {"labeled + G2 extension", "labeled, no extension", "least squares (plane param.)",
                                             "least squares + thin plate 1e-4", "labeled + G2 extension + E_Mesh 1e-2",
                                             "unlabeled + G2 extension (plane param.)", "approxSurface (default smoothing)",
-                                            "approxSurface (no smoothing)"};
+                                            "approxSurface (no smoothing)", "labeled + G2 extension, the paper's isocurve fairness"};
   // The peer, FreeCAD's ReverseEngineering.approxSurface, in one freecadcmd run over every
   // region's vertices (12 x 12 poles, with its default smoothing and without), written out first.
   const std::string peerDir = "/tmp/holefill_bench_corpus_" + std::to_string(static_cast<long>(getpid()));
@@ -533,7 +535,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
         BSplineSurface s;
-        if (mi <= 5) {
+        if (mi != 6 && mi != 7) {
           s = fitBy(mi, mesh, labels, fittedUV);
           m.seconds = seconds(t0);
         } else {

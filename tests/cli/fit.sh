@@ -62,6 +62,9 @@ assert abs(g2["width"] - 6.0) < 0.1 and abs(g2["height"] - 3.0) < 0.1, g2
 PY
 [ -s "$T/untrimmed_G2.brep" ] && ok "untrimmed surface written" || bad "no untrimmed surface"
 # Control points chosen by the data: from 5x5, refined while the data max exceeds the tolerance.
+expect_error "an unknown --isocurves" "--isocurves" "$T/region.obj" --labels "$T/labels.json" --isocurves wiggly
+if "$H" fit "$T/region.obj" --labels "$T/labels.json" --isocurves paper --out "$T/fit_paper_iso.brep" >/dev/null 2>"$T/err" && [ -s "$T/fit_paper_iso.brep" ]; then
+  ok "fit with the paper's isocurve fairness"; else bad "fit --isocurves paper: $(cat "$T/err")"; fi
 expect_error "--max-ctrl below --ctrl" "--max-ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
 expect_error "zero --tolerance" "--tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --tolerance 1e-4 --out "$T/fit_refined.brep" --json \
