@@ -15,14 +15,19 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   LabeledFitResult r;
   r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
   const LabeledParameterization& p = r.parameterization;
+  // The extension of the mapped (smoothed) region, the region's own vertices put back in it.
+  const auto extendedAt = [&](const DomainExtensionOptions& eo) {
+    DomainExtension e = extendToRectangle(TriangleMesh{p.mapped, region.triangles}, p.uv, p.width, p.height, eo);
+    e.mesh.vertices.topRows(region.vertices.rows()) = region.vertices;
+    return e;
+  };
   if (o.extend) {
     // The extension continues the surface the map was made of (the region smoothed along the
     // normal where it is noisy): continued from the noisy vertices, scan noise at the boundary was
     // carried out into the extension, and the fit with it missed the data (median data max
     // 1.1e-2 with the extension against 5.3e-3 without, on the corpus). The region's own vertices
     // are then fitted where they are.
-    r.extension = extendToRectangle(TriangleMesh{p.mapped, region.triangles}, p.uv, p.width, p.height, o.extension);
-    r.extension.mesh.vertices.topRows(region.vertices.rows()) = region.vertices;
+    r.extension = extendedAt(o.extension);
   }
   bool extended = o.extend;
   auto fitWith = [&](const TensorFitOptions& fo) {
@@ -60,8 +65,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
       if (o.extension.order > 2) {
         DomainExtensionOptions lower = o.extension;
         lower.order = 2;
-        r.extension = extendToRectangle(TriangleMesh{p.mapped, region.triangles}, p.uv, p.width, p.height, lower);
-        r.extension.mesh.vertices.topRows(region.vertices.rows()) = region.vertices;
+        r.extension = extendedAt(lower);
         r.fit = fitWith(fo);
         kept = !fails(r.fit);
         why += kept ? "; extended at G1 instead" : "; so did G1";
