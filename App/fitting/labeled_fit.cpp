@@ -133,6 +133,7 @@ std::string LabeledFitResult::toJson() const {
       .field("data_rms", fit.dataRms)
       .field("weak_control_points", fit.weakControlPoints)
       .field("log10_condition", fit.log10Condition)
+      .field("parameter_corrections", fit.correctionRounds)
       .field("face_valid", fit.valid)
       .field("seconds", seconds)
       .field("refinements", refinements)

@@ -16,7 +16,9 @@ namespace holefill {
 struct LabeledFitOptions {
   LabeledParameterizationOptions parameterization;
   DomainExtensionOptions extension;  // order 3 (G2) by default
-  TensorFitOptions fit;  // fit.controlU × fit.controlV: the control points to start from
+  // fit.controlU × fit.controlV: the control points to start from. Three rounds of parameter
+  // correction (tensor_fit.h): the labeled map is distorted most at reflex corners and horns.
+  TensorFitOptions fit = [] { TensorFitOptions f; f.parameterCorrections = 3; return f; }();
   bool extend = true;
   // Control points chosen by the data: from the larger of fit.controlU and fit.controlV along the
   // rectangle's longer side and as many as keep the cells square along the other (4 at least),

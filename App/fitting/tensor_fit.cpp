@@ -17,11 +17,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "fill/fairness_energy.h"
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
 #include "geometry/spd_condition.h"
+#include "geometry/surface_projection.h"
 #include "mesh/mesh_holes.h"
 
 namespace holefill {
@@ -68,22 +71,15 @@ TopoDS_Wire loopWire(const Handle(Geom_Surface)& surface, const std::vector<Eige
   return wire.Wire();
 }
 
-}  // namespace
+// The poles by least squares with the thin-plate term, the knots of `s` fixed; the normal
+// matrix and each pole's support (the points in it) come back for the diagnostics.
+struct PoleSolve {
+  Eigen::MatrixX3d poles;
+  Eigen::SparseMatrix<double> normal;
+  int weak = 0;
+};
 
-TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv, const TriangleMesh& region,
-                                 const Eigen::MatrixX2d& regionUV, const TensorFitOptions& o) {
-  if (points.rows() != uv.rows() || region.vertices.rows() != regionUV.rows())
-    throw Error("the fitted points and their parameters disagree in number");
-  if (o.controlU < 4 || o.controlV < 4) throw Error("a cubic fit needs at least 4 control points in each direction");
-  if (!points.allFinite() || !uv.allFinite() || !regionUV.allFinite()) throw Error("the fitting input has a non-finite value");
-  const double u0 = uv.col(0).minCoeff(), u1 = uv.col(0).maxCoeff(), v0 = uv.col(1).minCoeff(), v1 = uv.col(1).maxCoeff();
-  if (!(u1 > u0 && v1 > v0)) throw Error("the points' parameters span no area");
-
-  TensorFitResult r;
-  BSplineSurface& s = r.surface;
-  s.degreeU = s.degreeV = 3;
-  s.knotsU = clampedUniformKnots(3, o.controlU - 3, u0, u1);
-  s.knotsV = clampedUniformKnots(3, o.controlV - 3, v0, v1);
+PoleSolve solvePoles(const BSplineSurface& s, const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv, const TensorFitOptions& o) {
   const int n = o.controlU * o.controlV;
   std::vector<Eigen::Triplet<double>> T;
   std::vector<int> support(n, 0);
@@ -97,28 +93,104 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
         ++support[pole];
       }
   }
-  for (int c : support) r.weakControlPoints += c < 3 ? 1 : 0;
+  PoleSolve out;
+  for (int c : support) out.weak += c < 3 ? 1 : 0;
   Eigen::SparseMatrix<double> B(points.rows(), n);
   B.setFromTriplets(T.begin(), T.end());
-  Eigen::SparseMatrix<double> N = B.transpose() * B;
+  out.normal = B.transpose() * B;
   const Eigen::SparseMatrix<double> E = fairnessMatrix(3, s.knotsU, 3, s.knotsV, FairnessWeights{1.0, 0.0});
-  const double scale = std::max(1e-300, N.diagonal().maxCoeff()) / std::max(1e-300, Eigen::MatrixXd(E).diagonal().maxCoeff());
-  N += o.smoothing * scale * E;
-  r.log10Condition = log10Condition(N);
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(N);
+  const double scale = std::max(1e-300, out.normal.diagonal().maxCoeff()) / std::max(1e-300, Eigen::MatrixXd(E).diagonal().maxCoeff());
+  out.normal += o.smoothing * scale * E;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(out.normal);
   if (solver.info() != Eigen::Success) throw Error("the fitting system is singular: add smoothing or fewer control points");
-  s.poles = solver.solve(B.transpose() * points);
-  if (!s.poles.allFinite()) throw Error("the fit failed (non-finite control points)");
+  out.poles = solver.solve(B.transpose() * points);
+  if (!out.poles.allFinite()) throw Error("the fit failed (non-finite control points)");
+  return out;
+}
 
-  // Data error over the region's own vertices.
+// Twice the signed area of region triangle t in the parameters.
+double signedArea(const Eigen::MatrixX2d& uv, const Eigen::Vector3i& t) {
+  const Eigen::Vector2d a = uv.row(t[1]) - uv.row(t[0]), b = uv.row(t[2]) - uv.row(t[0]);
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+}  // namespace
+
+TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv, const TriangleMesh& region,
+                                 const Eigen::MatrixX2d& regionUV, const TensorFitOptions& o) {
+  if (points.rows() != uv.rows() || region.vertices.rows() != regionUV.rows())
+    throw Error("the fitted points and their parameters disagree in number");
+  if (o.controlU < 4 || o.controlV < 4) throw Error("a cubic fit needs at least 4 control points in each direction");
+  if (!points.allFinite() || !uv.allFinite() || !regionUV.allFinite()) throw Error("the fitting input has a non-finite value");
+  const double u0 = uv.col(0).minCoeff(), u1 = uv.col(0).maxCoeff(), v0 = uv.col(1).minCoeff(), v1 = uv.col(1).maxCoeff();
+  if (!(u1 > u0 && v1 > v0)) throw Error("the points' parameters span no area");
+  const Eigen::Index nr = region.vertices.rows();
+  if (o.parameterCorrections > 0 && (points.rows() < nr || points.topRows(nr) != region.vertices || uv.topRows(nr) != regionUV))
+    throw Error("parameter correction needs the region's vertices, at their parameters, first among the fitted points");
+
+  TensorFitResult r;
+  BSplineSurface& s = r.surface;
+  s.degreeU = s.degreeV = 3;
+  s.knotsU = clampedUniformKnots(3, o.controlU - 3, u0, u1);
+  s.knotsV = clampedUniformKnots(3, o.controlV - 3, v0, v1);
   const double diagonal = std::max(1e-300, (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm());
-  double sum = 0;
-  for (Eigen::Index k = 0; k < region.vertices.rows(); ++k) {
-    const double d = (s.point(regionUV(k, 0), regionUV(k, 1)) - region.vertices.row(k).transpose()).norm() / diagonal;
-    r.dataMax = std::max(r.dataMax, d);
-    sum += d * d;
+  // Data error over the region's own vertices at their parameters: {max, rms} / diagonal.
+  const auto dataError = [&](const BSplineSurface& f, const Eigen::MatrixX2d& ruv) {
+    double mx = 0, sum = 0;
+    for (Eigen::Index k = 0; k < nr; ++k) {
+      const double d = (f.point(ruv(k, 0), ruv(k, 1)) - region.vertices.row(k).transpose()).norm() / diagonal;
+      mx = std::max(mx, d);
+      sum += d * d;
+    }
+    return std::pair<double, double>{mx, std::sqrt(sum / std::max<Eigen::Index>(1, nr))};
+  };
+  Eigen::MatrixX2d fitUV = uv;
+  r.regionUV = regionUV;
+  PoleSolve solved = solvePoles(s, points, fitUV, o);
+  s.poles = solved.poles;
+  std::tie(r.dataMax, r.dataRms) = dataError(s, r.regionUV);
+  if (o.parameterCorrections > 0) {
+    std::vector<double> sign0(region.triangles.rows());
+    for (Eigen::Index t = 0; t < region.triangles.rows(); ++t) sign0[t] = signedArea(regionUV, region.triangles.row(t).transpose());
+    ProjectionOptions po;
+    for (int round = 0; round < o.parameterCorrections; ++round) {
+      Eigen::MatrixX2d next = r.regionUV;
+      for (Eigen::Index k = 0; k < nr; ++k) {
+        Eigen::Vector2d q = next.row(k).transpose();
+        projectPointFrom(s, region.vertices.row(k).transpose(), q, po);
+        next.row(k) = q.transpose();
+      }
+      // A footpoint that would turn a triangle over (a sliver squeezed by the map, a vertex whose
+      // closest point lies across a fold of the fit) keeps its last parameters, with the other
+      // corners of that triangle; repeated, since a vertex held back can turn a neighbour.
+      bool turned = true;
+      for (int pass = 0; pass < 20 && turned; ++pass) {
+        turned = false;
+        for (Eigen::Index t = 0; t < region.triangles.rows(); ++t) {
+          if (sign0[t] == 0 || signedArea(next, region.triangles.row(t).transpose()) * sign0[t] > 0) continue;
+          turned = true;
+          for (int c = 0; c < 3; ++c) next.row(region.triangles(t, c)) = r.regionUV.row(region.triangles(t, c));
+        }
+      }
+      if (turned) break;
+      Eigen::MatrixX2d nextFit = fitUV;
+      nextFit.topRows(nr) = next;
+      BSplineSurface trial = s;
+      PoleSolve again = solvePoles(trial, points, nextFit, o);
+      trial.poles = again.poles;
+      const auto [mx, rms] = dataError(trial, next);
+      if (!(rms < r.dataRms)) break;
+      s = std::move(trial);
+      solved = std::move(again);
+      fitUV = std::move(nextFit);
+      r.regionUV = std::move(next);
+      r.dataMax = mx;
+      r.dataRms = rms;
+      ++r.correctionRounds;
+    }
   }
-  r.dataRms = std::sqrt(sum / std::max<Eigen::Index>(1, region.vertices.rows()));
+  r.weakControlPoints = solved.weak;
+  r.log10Condition = log10Condition(solved.normal);
 
   // Trimmed face: the region's outer loop and its inner holes as pcurves.
   const Handle(Geom_BSplineSurface) g = toOcct(s);
@@ -129,7 +201,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
     if (holes.holes[k].length > holes.holes[outer].length) outer = k;
   auto loopUV = [&](const MeshHole& h) {
     std::vector<Eigen::Vector2d> out;
-    for (int v : h.loop) out.push_back(regionUV.row(v).transpose());
+    for (int v : h.loop) out.push_back(r.regionUV.row(v).transpose());
     return out;
   };
   BRepBuilderAPI_MakeFace mf(g, loopWire(g, loopUV(holes.holes[outer])));

@@ -17,12 +17,24 @@ namespace holefill {
 struct TensorFitOptions {
   int controlU = 12, controlV = 12;  // control points per direction (cubic: at least 4)
   double smoothing = 1e-6;           // thin-plate weight relative to the data term's scale
+  // Rounds of parameter correction (Hoschek's intrinsic parameterization; the footpoint by The
+  // NURBS Book's point inversion): after a fit, each region vertex takes the parameters of its
+  // closest point on the surface and the fit is solved again. A map distorted where the region
+  // turns (a reflex corner) otherwise pins points to parameters the surface can only honour by
+  // stretching along itself, which with few control points also bends it off the data. Needs the
+  // region's vertices as the first rows of `points` (an extension keeps them there); the rest of
+  // the points keep their parameters. A vertex whose footpoint would turn a region triangle over
+  // in the parameters keeps its last ones; a round that does not lower the data RMS is not taken
+  // and ends the correction. 0: as given.
+  int parameterCorrections = 0;
 };
 
 struct TensorFitResult {
   BSplineSurface surface;             // untrimmed, over the points' domain
   TopoDS_Face face;                   // trimmed by the region's boundary loops
   bool valid = false;                 // BRepCheck_Analyzer on the face
+  Eigen::MatrixX2d regionUV;          // the region vertices' parameters the face is trimmed at (corrected)
+  int correctionRounds = 0;           // parameter corrections taken
   double dataMax = 0, dataRms = 0;    // region vertices to the surface at their parameters / region diagonal
   int weakControlPoints = 0;
   double log10Condition = 0;          // of the normal matrix (infinite when singular)

@@ -432,6 +432,7 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     o.extension.paperIsocurves = method == 8;
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
     fittedUV = r.extension.uv.rows() > 0 ? r.extension.uv : r.parameterization.uv;  // no extension, or one given up
+    fittedUV.topRows(r.fit.regionUV.rows()) = r.fit.regionUV;                         // as corrected
     return r.fit.surface;
   }
   if (method == 5) {
@@ -475,11 +476,22 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
                                             "least squares + thin plate 1e-4", "labeled + G2 extension + E_Mesh 1e-2",
                                             "unlabeled + G2 extension (plane param.)", "approxSurface (default smoothing)",
                                             "approxSurface (no smoothing)", "labeled + G2 extension, the paper's isocurve fairness"};
+  // BENCH_FIT_ONLY=0,1,3 runs only those methods (the rest are rows marked not run): a quick
+  // look at one change beside its anchor while iterating; the committed tables run them all.
+  std::vector<bool> only(methods.size(), true);
+  if (const char* env = std::getenv("BENCH_FIT_ONLY")) {
+    std::fill(only.begin(), only.end(), false);
+    std::istringstream list(env);
+    std::string item;
+    while (std::getline(list, item, ','))
+      if (!item.empty() && std::stoul(item) < methods.size()) only[std::stoul(item)] = true;
+  }
+  const auto chosen = [&](size_t mi) { return only[mi]; };
   // The peer, FreeCAD's ReverseEngineering.approxSurface, in one freecadcmd run over every
   // region's vertices (12 x 12 poles, with its default smoothing and without), written out first.
   const std::string peerDir = "/tmp/holefill_bench_corpus_" + std::to_string(static_cast<long>(getpid()));
   std::map<std::string, double> peerSeconds;
-  if (!approxScript.empty()) {
+  if (!approxScript.empty() && (chosen(6) || chosen(7))) {
     std::system(("mkdir -p '" + peerDir + "'").c_str());
     int count = 0;
     for (const JsonValue& r : regions->array) {
@@ -531,6 +543,13 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
     for (size_t mi = 0; mi < methods.size(); ++mi) {
       Measure m;
       double truthMax = 0;
+      if (!chosen(mi)) {
+        m.failed = true;
+        m.why = "not run (BENCH_FIT_ONLY)";
+        row.m.push_back(m);
+        row.truthMax.push_back(truthMax);
+        continue;
+      }
       try {
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
