@@ -71,15 +71,17 @@ TopoDS_Wire loopWire(const Handle(Geom_Surface)& surface, const std::vector<Eige
   return wire.Wire();
 }
 
-// The poles by least squares with the thin-plate term, the knots of `s` fixed; the normal
-// matrix and each pole's support (the points in it) come back for the diagnostics.
+// The poles by least squares with the thin-plate term `fairness` (its matrix on the knots of
+// `s`, built once: the knots stay while the parameters are corrected); the normal matrix and each
+// pole's support (the points in it) come back for the diagnostics.
 struct PoleSolve {
   Eigen::MatrixX3d poles;
   Eigen::SparseMatrix<double> normal;
   int weak = 0;
 };
 
-PoleSolve solvePoles(const BSplineSurface& s, const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv, const TensorFitOptions& o) {
+PoleSolve solvePoles(const BSplineSurface& s, const Eigen::SparseMatrix<double>& fairness, const Eigen::MatrixX3d& points,
+                     const Eigen::MatrixX2d& uv, const TensorFitOptions& o) {
   const int n = o.controlU * o.controlV;
   std::vector<Eigen::Triplet<double>> T;
   std::vector<int> support(n, 0);
@@ -98,9 +100,8 @@ PoleSolve solvePoles(const BSplineSurface& s, const Eigen::MatrixX3d& points, co
   Eigen::SparseMatrix<double> B(points.rows(), n);
   B.setFromTriplets(T.begin(), T.end());
   out.normal = B.transpose() * B;
-  const Eigen::SparseMatrix<double> E = fairnessMatrix(3, s.knotsU, 3, s.knotsV, FairnessWeights{1.0, 0.0});
-  const double scale = std::max(1e-300, out.normal.diagonal().maxCoeff()) / std::max(1e-300, Eigen::MatrixXd(E).diagonal().maxCoeff());
-  out.normal += o.smoothing * scale * E;
+  const double scale = std::max(1e-300, out.normal.diagonal().maxCoeff()) / std::max(1e-300, fairness.diagonal().maxCoeff());
+  out.normal += o.smoothing * scale * fairness;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(out.normal);
   if (solver.info() != Eigen::Success) throw Error("the fitting system is singular: add smoothing or fewer control points");
   out.poles = solver.solve(B.transpose() * points);
@@ -146,7 +147,8 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   };
   Eigen::MatrixX2d fitUV = uv;
   r.regionUV = regionUV;
-  PoleSolve solved = solvePoles(s, points, fitUV, o);
+  const Eigen::SparseMatrix<double> fairness = fairnessMatrix(3, s.knotsU, 3, s.knotsV, FairnessWeights{1.0, 0.0});
+  PoleSolve solved = solvePoles(s, fairness, points, fitUV, o);
   s.poles = solved.poles;
   std::tie(r.dataMax, r.dataRms) = dataError(s, r.regionUV);
   if (o.parameterCorrections > 0) {
@@ -176,7 +178,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
       Eigen::MatrixX2d nextFit = fitUV;
       nextFit.topRows(nr) = next;
       BSplineSurface trial = s;
-      PoleSolve again = solvePoles(trial, points, nextFit, o);
+      PoleSolve again = solvePoles(trial, fairness, points, nextFit, o);
       trial.poles = again.poles;
       const auto [mx, rms] = dataError(trial, next);
       if (!(rms < r.dataRms)) break;

@@ -486,12 +486,11 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
     while (std::getline(list, item, ','))
       if (!item.empty() && std::stoul(item) < methods.size()) only[std::stoul(item)] = true;
   }
-  const auto chosen = [&](size_t mi) { return only[mi]; };
   // The peer, FreeCAD's ReverseEngineering.approxSurface, in one freecadcmd run over every
   // region's vertices (12 x 12 poles, with its default smoothing and without), written out first.
   const std::string peerDir = "/tmp/holefill_bench_corpus_" + std::to_string(static_cast<long>(getpid()));
   std::map<std::string, double> peerSeconds;
-  if (!approxScript.empty() && (chosen(6) || chosen(7))) {
+  if (!approxScript.empty() && (only[6] || only[7])) {
     std::system(("mkdir -p '" + peerDir + "'").c_str());
     int count = 0;
     for (const JsonValue& r : regions->array) {
@@ -543,7 +542,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
     for (size_t mi = 0; mi < methods.size(); ++mi) {
       Measure m;
       double truthMax = 0;
-      if (!chosen(mi)) {
+      if (!only[mi]) {
         m.failed = true;
         m.why = "not run (BENCH_FIT_ONLY)";
         row.m.push_back(m);
