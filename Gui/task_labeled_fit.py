@@ -1,5 +1,5 @@
 """Task panel of "Fit labeled surface": for a BoundaryLabels object (or a mesh that has one),
-the options of the labeled fit (control points, G2/G1/no extension, margin, the weights) with a
+the options of the labeled fit (control points, fitted/G2/G1/no extension, margin, the weights) with a
 preview in the 3D view of the guiding frame (blue curves), the extended mesh (grey wireframe of
 the triangles added around the region) and the trimmed surface (translucent green); the status
 line carries the fit's numbers. OK creates the parametric LabeledFit object (one undo step),
@@ -48,7 +48,7 @@ class FitPanel:
         layout.addRow("Control points v:", self.ctrlV)
         self.extension = QtWidgets.QComboBox()
         self.extension.setObjectName("HoleFillFitExtension")
-        self.extension.addItems(["G2", "G1", "none"])
+        self.extension.addItems(["fit", "G2", "G1", "none"])
         layout.addRow("Extension:", self.extension)
         self.margin = QtWidgets.QSpinBox()
         self.margin.setObjectName("HoleFillFitMargin")

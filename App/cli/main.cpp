@@ -80,10 +80,12 @@ const char* kUsage =
     "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
-    "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension G1|G2|none]\n"
+    "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension fit|G2|G1|none]\n"
     "                [--margin M] [--fairness W] [--isocurves grid|paper] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
     "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--untrimmed-out S.brep] [--json]\n"
-    "                labeled fitting of a trimmed mesh region; control points refined from 12x12 up to N (40) per\n"
+    "                labeled fitting of a trimmed mesh region; the extension to the domain's rectangle sampled from a\n"
+    "                thin-plate fit of the region (fit), or the paper's continuation of its boundary (G2, G1: --fairness,\n"
+    "                --isocurves paper and --mesh-fairness shape it), or none; control points refined from 12x12 up to N (40) per\n"
     "                direction while the data max exceeds T (1e-3 of the diagonal; --ctrl alone: exactly those);\n"
     "                labeled vertices deeper than D (0.05) of their side inside its line past a sharp turn are\n"
     "                left free (negative: all held); LABELS.json:\n"
@@ -492,11 +494,7 @@ int cmdFit(const Args& a) {
     if (!(o.tolerance > 0)) throw Error("--tolerance must be positive");
   }
   if (a.has("--release-depth")) o.parameterization.releaseDepth = number(a.get("--release-depth"), "--release-depth");
-  const std::string ext = a.get("--extension", "G2");
-  if (ext == "G1") o.extension.order = 2;
-  else if (ext == "G2") o.extension.order = 3;
-  else if (ext == "none") o.extend = false;
-  else throw Error("--extension must be G1, G2 or none, got '" + ext + "'");
+  setExtensionByName(o, a.get("--extension", "fit"));
   if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
   const std::string iso = a.get("--isocurves", "grid");
   if (iso == "paper") o.extension.paperIsocurves = true;

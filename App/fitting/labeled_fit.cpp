@@ -12,13 +12,26 @@ namespace holefill {
 
 LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (o.extend && o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit &&
+      (o.extension.meshFairness > 0 || o.extension.paperIsocurves))
+    throw Error("mesh fairness and the paper's isocurves shape the continuation extension (G2 or G1), not the fitted one: "
+                "ask for extension G2 or G1 with them");
   LabeledFitResult r;
   r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
   const LabeledParameterization& p = r.parameterization;
   // The extension of the mapped (smoothed) region, the region's own vertices put back in it.
   const auto extendedAt = [&](const DomainExtensionOptions& eo) {
     DomainExtension e = extendToRectangle(TriangleMesh{p.mapped, region.triangles}, p.uv, p.width, p.height, eo);
-    e.mesh.vertices.topRows(region.vertices.rows()) = region.vertices;
+    const Eigen::Index nr = region.vertices.rows();
+    e.mesh.vertices.topRows(nr) = region.vertices;
+    if (o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit && e.mesh.vertices.rows() > nr) {
+      TensorFitOptions so = o.fit;
+      so.smoothing = o.extensionSmoothing;
+      so.parameterCorrections = 0;
+      so.u0 = e.u0, so.u1 = e.u1, so.v0 = e.v0, so.v1 = e.v1;
+      const BSplineSurface smooth = fitTensorProduct(region.vertices, p.uv, region, p.uv, so).surface;
+      for (Eigen::Index k = nr; k < e.mesh.vertices.rows(); ++k) e.mesh.vertices.row(k) = smooth.point(e.uv(k, 0), e.uv(k, 1)).transpose();
+    }
     return e;
   };
   if (o.extend) {
@@ -67,7 +80,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
                     o.extension.order - 1, r.fit.dataMax, r.fit.dataRms, bare.dataMax, bare.dataRms);
       std::string why = line;
       bool kept = false;
-      if (o.extension.order > 2) {
+      if (o.extension.order > 2 && o.extensionSource == LabeledFitOptions::ExtensionSource::Continuation) {
         DomainExtensionOptions lower = o.extension;
         lower.order = 2;
         r.extension = extendedAt(lower);
@@ -114,6 +127,13 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+void setExtensionByName(LabeledFitOptions& o, const std::string& name) {
+  o.extend = name != "none";
+  if (name == "fit") o.extensionSource = LabeledFitOptions::ExtensionSource::SmoothFit;
+  else if (name == "G2" || name == "G1") o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation, o.extension.order = name == "G2" ? 3 : 2;
+  else if (name != "none") throw Error("the extension must be fit, G2, G1 or none, got '" + name + "'");
 }
 
 std::vector<std::string> LabeledFitResult::allWarnings() const {

@@ -8,9 +8,9 @@
 #include <limits>
 #include <map>
 
+#include "fitting/boundary_embedding.h"
 #include "fitting/slim_descent.h"
 #include "geometry/error.h"
-#include "geometry/polygon2d.h"
 #include "mesh/mesh_holes.h"
 #include "mesh/mesh_topology.h"
 
@@ -207,22 +207,6 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
     sp = kept;
   }
   return released;
-}
-
-// Whether the map's boundary loops cross themselves or each other: the map is not an embedding
-// then, though no triangle need be turned over.
-bool boundaryCrosses(const MeshHoleReport& boundary, const Eigen::MatrixX2d& uv) {
-  std::vector<Polygon2> loops;
-  for (const MeshHole& h : boundary.holes) {
-    loops.emplace_back();
-    for (int v : h.loop) loops.back().push_back(uv.row(v).transpose());
-  }
-  for (size_t a = 0; a < loops.size(); ++a) {
-    if (selfIntersects(loops[a])) return true;
-    for (size_t b = a + 1; b < loops.size(); ++b)
-      if (loopsCross(loops[a], loops[b])) return true;
-  }
-  return false;
 }
 
 }  // namespace

@@ -8,7 +8,11 @@
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Precision.hxx>
 #include <ShapeFix_Face.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -21,8 +25,10 @@
 #include <utility>
 
 #include "fill/fairness_energy.h"
+#include "fitting/boundary_embedding.h"
 #include "geometry/bspline_basis.h"
 #include "geometry/error.h"
+#include "geometry/polygon2d.h"
 #include "geometry/spd_condition.h"
 #include "geometry/surface_projection.h"
 #include "mesh/mesh_holes.h"
@@ -34,14 +40,29 @@ namespace {
 // A closed wire on the surface through the loop's parameters: one interpolating pcurve per
 // stretch between corners (where the loop turns by more than 30° in uv), so corners stay sharp
 // instead of being rounded (and overshot) by one periodic curve; periodic when there is none.
-TopoDS_Wire loopWire(const Handle(Geom_Surface)& surface, const std::vector<Eigen::Vector2d>& uv) {
+// `polyline`: the loop's own segments as pcurves (degree 1), simple wherever the loop is, for
+// a noisy loop whose interpolants swing across each other.
+TopoDS_Wire loopWire(const Handle(Geom_Surface)& surface, const std::vector<Eigen::Vector2d>& uv, bool polyline) {
   const int n = static_cast<int>(uv.size());
   std::vector<int> corners;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector2d a = uv[k] - uv[(k + n - 1) % n], b = uv[(k + 1) % n] - uv[k];
     if (a.norm() > 0 && b.norm() > 0 && std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) > M_PI / 6) corners.push_back(k);
   }
-  auto curve = [&](const std::vector<Eigen::Vector2d>& pts, bool periodic) {
+  auto curve = [&](const std::vector<Eigen::Vector2d>& pts, bool periodic) -> Handle(Geom2d_BSplineCurve) {
+    if (polyline) {
+      const int m = static_cast<int>(pts.size()) + (periodic ? 1 : 0);
+      TColgp_Array1OfPnt2d poles(1, m);
+      TColStd_Array1OfReal knots(1, m);
+      TColStd_Array1OfInteger mults(1, m);
+      for (int k = 0; k < m; ++k) {
+        const Eigen::Vector2d& q = pts[static_cast<size_t>(k) % pts.size()];
+        poles.SetValue(k + 1, gp_Pnt2d(q.x(), q.y()));
+        knots.SetValue(k + 1, k);
+        mults.SetValue(k + 1, k == 0 || k == m - 1 ? 2 : 1);
+      }
+      return new Geom2d_BSplineCurve(poles, knots, mults, 1);
+    }
     Handle(TColgp_HArray1OfPnt2d) P = new TColgp_HArray1OfPnt2d(1, static_cast<int>(pts.size()));
     for (size_t k = 0; k < pts.size(); ++k) P->SetValue(static_cast<int>(k) + 1, gp_Pnt2d(pts[k].x(), pts[k].y()));
     Geom2dAPI_Interpolate interp(P, periodic ? Standard_True : Standard_False, 1e-12);
@@ -69,6 +90,30 @@ TopoDS_Wire loopWire(const Handle(Geom_Surface)& surface, const std::vector<Eige
   }
   if (!wire.IsDone()) throw Error("the trimming curves of the region's boundary do not close");
   return wire.Wire();
+}
+
+// The loop without its spikes: a vertex where the loop turns back on itself (by more than 170°)
+// or repeats its predecessor. A map keeps sliver triangles folded at a held side where scan noise
+// pushed a vertex past its neighbour (labeled_parameterization.h), and the loop then runs back
+// and forth along that side: a wire BRepCheck calls self-intersecting. The vertices dropped stay
+// fitted; the trimming curve passes within the noise of them.
+std::vector<Eigen::Vector2d> withoutSpikes(std::vector<Eigen::Vector2d> loop) {
+  const double cosLimit = std::cos(170 * M_PI / 180);
+  for (bool dropped = true; dropped && loop.size() > 3;) {
+    dropped = false;
+    for (size_t k = 0; k < loop.size() && loop.size() > 3;) {
+      const Eigen::Vector2d& p = loop[(k + loop.size() - 1) % loop.size()];
+      const Eigen::Vector2d a = loop[k] - p, b = loop[(k + 1) % loop.size()] - loop[k];
+      const double la = a.norm(), lb = b.norm();
+      if (la == 0 || (lb > 0 && a.dot(b) < cosLimit * la * lb)) {
+        loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(k));
+        dropped = true;
+      } else {
+        ++k;
+      }
+    }
+  }
+  return loop;
 }
 
 // The poles by least squares with the thin-plate term `fairness` (its matrix on the knots of
@@ -123,8 +168,13 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
     throw Error("the fitted points and their parameters disagree in number");
   if (o.controlU < 4 || o.controlV < 4) throw Error("a cubic fit needs at least 4 control points in each direction");
   if (!points.allFinite() || !uv.allFinite() || !regionUV.allFinite()) throw Error("the fitting input has a non-finite value");
-  const double u0 = uv.col(0).minCoeff(), u1 = uv.col(0).maxCoeff(), v0 = uv.col(1).minCoeff(), v1 = uv.col(1).maxCoeff();
+  const bool given = o.u1 > o.u0 && o.v1 > o.v0;
+  double u0 = uv.col(0).minCoeff(), u1 = uv.col(0).maxCoeff(), v0 = uv.col(1).minCoeff(), v1 = uv.col(1).maxCoeff();
   if (!(u1 > u0 && v1 > v0)) throw Error("the points' parameters span no area");
+  if (given) {
+    if (!(o.u0 <= u0 && o.u1 >= u1 && o.v0 <= v0 && o.v1 >= v1)) throw Error("the fit's domain rectangle does not hold the points' parameters");
+    u0 = o.u0, u1 = o.u1, v0 = o.v0, v1 = o.v1;
+  }
   const Eigen::Index nr = region.vertices.rows();
   if (o.parameterCorrections > 0 && (points.rows() < nr || points.topRows(nr) != region.vertices || uv.topRows(nr) != regionUV))
     throw Error("parameter correction needs the region's vertices, at their parameters, first among the fitted points");
@@ -151,6 +201,8 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   PoleSolve solved = solvePoles(s, fairness, points, fitUV, o);
   s.poles = solved.poles;
   std::tie(r.dataMax, r.dataRms) = dataError(s, r.regionUV);
+  const MeshHoleReport holes = findMeshHoles(region);
+  if (holes.holes.empty()) throw Error("the region has no boundary to trim by");
   if (o.parameterCorrections > 0) {
     std::vector<double> sign0(region.triangles.rows());
     for (Eigen::Index t = 0; t < region.triangles.rows(); ++t) sign0[t] = signedArea(regionUV, region.triangles.row(t).transpose());
@@ -164,7 +216,10 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
       }
       // A footpoint that would turn a triangle over (a sliver squeezed by the map, a vertex whose
       // closest point lies across a fold of the fit) keeps its last parameters, with the other
-      // corners of that triangle; repeated, since a vertex held back can turn a neighbour.
+      // corners of that triangle; so do the ends of boundary edges that would cross another
+      // (footpoints of a noisy boundary can zigzag past each other with every triangle upright,
+      // and the face's wire then crosses itself); repeated, since a vertex held back can turn a
+      // neighbour.
       bool turned = true;
       for (int pass = 0; pass < 20 && turned; ++pass) {
         turned = false;
@@ -172,6 +227,10 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
           if (sign0[t] == 0 || signedArea(next, region.triangles.row(t).transpose()) * sign0[t] > 0) continue;
           turned = true;
           for (int c = 0; c < 3; ++c) next.row(region.triangles(t, c)) = r.regionUV.row(region.triangles(t, c));
+        }
+        for (int v : boundaryCrossingVertices(holes, next)) {
+          turned = true;
+          next.row(v) = r.regionUV.row(v);
         }
       }
       if (turned) break;
@@ -196,24 +255,36 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
 
   // Trimmed face: the region's outer loop and its inner holes as pcurves.
   const Handle(Geom_BSplineSurface) g = toOcct(s);
-  const MeshHoleReport holes = findMeshHoles(region);
-  if (holes.holes.empty()) throw Error("the region has no boundary to trim by");
   size_t outer = 0;
   for (size_t k = 1; k < holes.holes.size(); ++k)
     if (holes.holes[k].length > holes.holes[outer].length) outer = k;
-  auto loopUV = [&](const MeshHole& h) {
+  // The face's material lies left of its wires in the parameters: the outer loop anticlockwise,
+  // the inner ones clockwise, whichever way the region's triangles ran (a region given clockwise
+  // seen from its normal has its loops traced the other way, and its holes were refused as "Bad
+  // orientation of sub-shape").
+  auto loopUV = [&](const MeshHole& h, bool outerLoop) {
     std::vector<Eigen::Vector2d> out;
     for (int v : h.loop) out.push_back(r.regionUV.row(v).transpose());
-    return out;
+    if ((signedArea(out) > 0) != outerLoop) std::reverse(out.begin(), out.end());
+    return withoutSpikes(out);
   };
-  BRepBuilderAPI_MakeFace mf(g, loopWire(g, loopUV(holes.holes[outer])));
-  for (size_t k = 0; k < holes.holes.size(); ++k)
-    if (k != outer) mf.Add(loopWire(g, loopUV(holes.holes[k])));
-  if (!mf.IsDone()) throw Error("could not trim the fitted surface by the region's boundary");
-  ShapeFix_Face fix(mf.Face());
-  fix.Perform();
-  r.face = TopoDS::Face(fix.Face());
-  r.valid = BRepCheck_Analyzer(r.face).IsValid();
+  // Smooth pcurves first; where they cross (a noisy loop's interpolants overshoot between close
+  // stretches) the loop's own segments, which are simple when the loop is (the correction keeps it so).
+  for (bool polyline : {false, true}) {
+    BRepBuilderAPI_MakeFace mf(g, loopWire(g, loopUV(holes.holes[outer], true), polyline));
+    for (size_t k = 0; k < holes.holes.size(); ++k)
+      if (k != outer) mf.Add(loopWire(g, loopUV(holes.holes[k], false), polyline));
+    if (!mf.IsDone()) throw Error("could not trim the fitted surface by the region's boundary");
+    ShapeFix_Face fix(mf.Face());
+    fix.Perform();
+    r.face = TopoDS::Face(fix.Face());
+    // The 3D curves built from long pcurves on a wavy (noisy) fit stray from them past the
+    // default tolerance, and BRepCheck refused the edges (InvalidSameParameterFlag); the edges'
+    // tolerances are raised to what the curves really are instead.
+    BRepLib::SameParameter(r.face, Precision::Confusion(), Standard_True);
+    r.valid = BRepCheck_Analyzer(r.face).IsValid();
+    if (r.valid) break;
+  }
   return r;
 }
 

@@ -27,6 +27,10 @@ struct TensorFitOptions {
   // in the parameters keeps its last ones; a round that does not lower the data RMS is not taken
   // and ends the correction. 0: as given.
   int parameterCorrections = 0;
+  // The knots' rectangle [u0, u1] × [v0, v1]; empty (u1 <= u0): the points' parameter bounds.
+  // A fit of the region alone over its whole domain rectangle (the thin plate carries it past
+  // the data) needs it.
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
 };
 
 struct TensorFitResult {

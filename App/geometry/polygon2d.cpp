@@ -34,37 +34,39 @@ bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
 }
 }  // namespace
 
-bool selfIntersects(const Polygon2& p) {
-  // Drop repeated vertices (corners are sampled by both adjacent edges).
-  Polygon2 q;
-  for (const auto& v : p)
-    if (q.empty() || (v - q.back()).norm() > 1e-14) q.push_back(v);
-  while (q.size() > 1 && (q.front() - q.back()).norm() <= 1e-14) q.pop_back();
-  const size_t n = q.size();
-  if (n < 4) return false;
-  // Sort-free O(n^2) with a bounding-box reject; loops have at most a few thousand samples.
-  for (size_t i = 0; i < n; ++i) {
-    const auto &a = q[i], &b = q[(i + 1) % n];
-    const double xmin = std::min(a.x(), b.x()), xmax = std::max(a.x(), b.x());
-    const double ymin = std::min(a.y(), b.y()), ymax = std::max(a.y(), b.y());
-    for (size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // adjacent through the closing edge
-      const auto &c = q[j], &d = q[(j + 1) % n];
-      if (std::max(c.x(), d.x()) < xmin || std::min(c.x(), d.x()) > xmax || std::max(c.y(), d.y()) < ymin ||
-          std::min(c.y(), d.y()) > ymax)
-        continue;
-      if (segmentsCross(a, b, c, d)) return true;
+std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit) {
+  struct Span {
+    double xmin, xmax, ymin, ymax;
+    LoopEdge e;
+  };
+  std::vector<Span> spans;
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (size_t k = 0; k < loops[l].size(); ++k) {
+      const auto &a = loops[l][k], &b = loops[l][(k + 1) % loops[l].size()];
+      spans.push_back({std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), {l, k}});
     }
-  }
-  return false;
+  std::sort(spans.begin(), spans.end(), [](const Span& p, const Span& q) { return p.xmin < q.xmin; });
+  auto ends = [&](const LoopEdge& e) {
+    const Polygon2& l = loops[e.loop];
+    return std::pair<const Eigen::Vector2d&, const Eigen::Vector2d&>{l[e.edge], l[(e.edge + 1) % l.size()]};
+  };
+  std::vector<std::pair<LoopEdge, LoopEdge>> out;
+  for (size_t i = 0; i < spans.size() && out.size() < limit; ++i)
+    for (size_t j = i + 1; j < spans.size() && spans[j].xmin <= spans[i].xmax && out.size() < limit; ++j) {
+      if (spans[j].ymin > spans[i].ymax || spans[j].ymax < spans[i].ymin) continue;
+      const auto [a, b] = ends(spans[i].e);
+      const auto [c, d] = ends(spans[j].e);
+      // Adjacent edges share a vertex and never cross properly; the strict test leaves them out.
+      if (segmentsCross(a, b, c, d)) out.push_back({spans[i].e, spans[j].e});
+    }
+  return out;
 }
 
+bool selfIntersects(const Polygon2& p) { return !crossingEdges({p}, 1).empty(); }
+
 bool loopsCross(const Polygon2& p, const Polygon2& q) {
-  for (size_t i = 0; i < p.size(); ++i) {
-    const auto &a = p[i], &b = p[(i + 1) % p.size()];
-    for (size_t j = 0; j < q.size(); ++j)
-      if (segmentsCross(a, b, q[j], q[(j + 1) % q.size()])) return true;
-  }
+  for (const auto& [e, f] : crossingEdges({p, q}))
+    if (e.loop != f.loop) return true;
   return false;
 }
 

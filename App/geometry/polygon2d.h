@@ -6,6 +6,8 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace holefill {
@@ -14,7 +16,16 @@ using Polygon2 = std::vector<Eigen::Vector2d>;  // closed implicitly (last verte
 
 double signedArea(const Polygon2& poly);  // > 0 for counter-clockwise
 bool contains(const Polygon2& poly, const Eigen::Vector2d& x);  // even-odd rule
-// True when two non-adjacent edges intersect; zero-length edges are skipped.
+// An edge of one of several loops: edge k runs from vertex k to vertex k + 1 (the last closes it).
+struct LoopEdge {
+  size_t loop = 0, edge = 0;
+};
+// The pairs of edges that cross properly (their interiors meet at one point), within a loop and
+// between loops, up to `limit` pairs; edges that only touch, zero-length edges and adjacent
+// edges do not count. A sweep over the edges' x extents: loops of tens of thousands of edges (a
+// large hole's boundary) are checked in about n log n.
+std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit = SIZE_MAX);
+// True when two edges of the polygon cross.
 bool selfIntersects(const Polygon2& poly);
 // True when an edge of one polygon crosses an edge of the other.
 bool loopsCross(const Polygon2& p, const Polygon2& q);

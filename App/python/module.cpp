@@ -460,10 +460,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
       o.fit.controlU = controlU;
       o.fit.controlV = controlV;
       o.fit.smoothing = smoothing;
-      if (extension == "G1") o.extension.order = 2;
-      else if (extension == "G2") o.extension.order = 3;
-      else if (extension == "none") o.extend = false;
-      else throw Error("extension must be G1, G2 or none, got '" + extension + "'");
+      setExtensionByName(o, extension);
       if (!(fairness >= 0 && smoothing >= 0 && framePlacement >= 0 && meshFairness >= 0)) throw Error("the weights must be zero or positive");
       o.extension.marginLayers = margin;
       o.extension.fairness = fairness;
@@ -495,7 +492,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
                             frame, r.extension.mesh.vertices, Eigen::MatrixXi(r.extension.mesh.triangles));
     });
   }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
-     py::arg("extension") = "G2", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
+     py::arg("extension") = "fit", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
      py::arg("meshFairness") = 0.0, py::arg("maxControl") = 40, py::arg("tolerance") = 1e-3, py::arg("releaseDepth") = 0.05,
      "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");

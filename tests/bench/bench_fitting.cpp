@@ -263,6 +263,7 @@ struct Measure {
   std::string why;
   double dataMax = 0, dataRms = 0, truthToFit = 0, fitToTruth = 0, log10Cond = 0, seconds = 0;
   int weak = 0;
+  int validFace = -1;  // the trimmed face passes BRepCheck: 1, 0; -1 where the method makes none
 };
 
 // Weak control points and the log10 condition of BᵀB for the points' parameters.
@@ -421,11 +422,18 @@ void curvaturePicture(const BSplineSurface& s, const std::string& path, const st
 // The fitters that need no FreeCAD, on one region: 0 labeled + G2 extension, 1 labeled without
 // extension, 2 least squares on the best-fit plane's parameters, 3 the same with thin plate 1e-4,
 // 4 labeled + G2 extension with the paper's mesh fairness E_Mesh at 1e-2, 5 unlabeled: plane
-// parameters + G2 extension, 8 labeled + G2 extension with the paper's isocurve fairness (6 and 7
-// are approxSurface, run elsewhere); 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each fitted point got.
-BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV) {
-  if (method <= 1 || method == 4 || method == 8) {
+// parameters + G2 extension, 8 labeled + G2 extension with the paper's isocurve fairness, 9
+// labeled + the paper's G2 continuation of the boundary as the extension (ours samples a
+// thin-plate fit of the region there; labeled_fit.h) (6 and 7 are approxSurface, run
+// elsewhere); 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each
+// fitted point got; validFace: whether the trimmed face is valid (-1: the anchors trim none).
+BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV,
+                     int& validFace) {
+  validFace = -1;
+  if (method <= 1 || method == 4 || method == 8 || method == 9) {
     LabeledFitOptions o;
+    // 4, 8 and 9 are the paper's continuation (E_Mesh and the isocurves shape it).
+    if (method == 4 || method == 8 || method == 9) o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation;
     o.fit.controlU = o.fit.controlV = kControl;
     o.extend = method != 1;
     if (method == 4) o.extension.meshFairness = 1e-2;
@@ -433,6 +441,7 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
     fittedUV = r.extension.uv.rows() > 0 ? r.extension.uv : r.parameterization.uv;  // no extension, or one given up
     fittedUV.topRows(r.fit.regionUV.rows()) = r.fit.regionUV;                         // as corrected
+    validFace = r.fit.valid ? 1 : 0;
     return r.fit.surface;
   }
   if (method == 5) {
@@ -445,7 +454,9 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     TensorFitOptions o;
     o.controlU = o.controlV = kControl;
     fittedUV = e.uv;
-    return fitTensorProduct(e.mesh.vertices, e.uv, mesh, uv, o).surface;
+    const TensorFitResult r = fitTensorProduct(e.mesh.vertices, e.uv, mesh, uv, o);
+    validFace = r.valid ? 1 : 0;
+    return r.surface;
   }
   const Eigen::MatrixX2d uv = planeParameters(mesh.vertices);
   TensorFitOptions o;
@@ -472,10 +483,11 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
   const JsonValue index = parseJson(readFileBytes(indexPath), indexPath);
   const JsonValue* regions = index.find("regions");
   if (!regions) throw Error(indexPath + " has no regions");
-  const std::vector<std::string> methods = {"labeled + G2 extension", "labeled, no extension", "least squares (plane param.)",
+  const std::vector<std::string> methods = {"labeled + extension (thin-plate fit)", "labeled, no extension", "least squares (plane param.)",
                                             "least squares + thin plate 1e-4", "labeled + G2 extension + E_Mesh 1e-2",
                                             "unlabeled + G2 extension (plane param.)", "approxSurface (default smoothing)",
-                                            "approxSurface (no smoothing)", "labeled + G2 extension, the paper's isocurve fairness"};
+                                            "approxSurface (no smoothing)", "labeled + G2 extension, the paper's isocurve fairness",
+                                            "labeled + G2 continuation extension (the paper's)"};
   // BENCH_FIT_ONLY=0,1,3 runs only those methods (the rest are rows marked not run): a quick
   // look at one change beside its anchor while iterating; the committed tables run them all.
   std::vector<bool> only(methods.size(), true);
@@ -554,7 +566,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
         const auto t0 = std::chrono::steady_clock::now();
         BSplineSurface s;
         if (mi != 6 && mi != 7) {
-          s = fitBy(mi, mesh, labels, fittedUV);
+          s = fitBy(mi, mesh, labels, fittedUV, m.validFace);
           m.seconds = seconds(t0);
         } else {
           const std::string key = "case" + std::to_string(regionNumber) + (mi == 6 ? "_smooth" : "_raw");
@@ -590,8 +602,8 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
     // that shards of the corpus run side by side can be merged.
     std::fprintf(stderr, "region %s %s %s %g", id.c_str(), row.shape.c_str(), row.labels.c_str(), row.noise);
     for (size_t mi = 0; mi < methods.size(); ++mi)
-      std::fprintf(stderr, " | %d %.3e %.3e %d %.2f %.2f", row.m[mi].failed ? 1 : 0, row.truthMax[mi], row.m[mi].truthToFit, row.m[mi].weak,
-                   row.m[mi].log10Cond, row.m[mi].seconds);
+      std::fprintf(stderr, " | %d %.3e %.3e %d %.2f %.2f %d", row.m[mi].failed ? 1 : 0, row.truthMax[mi], row.m[mi].truthToFit, row.m[mi].weak,
+                   row.m[mi].log10Cond, row.m[mi].seconds, row.m[mi].validFace);
     std::fprintf(stderr, "\n");
     rows.push_back(row);
   }
@@ -604,11 +616,11 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
     return v[v.size() / 2];
   };
   auto table = [&](const std::string& title, const std::function<bool(const Row&)>& keep) {
-    std::printf("\n%s\n\n| method | regions | failed | data goal | data max vs input (median) | data max vs truth (median) | band truth->fit (median / worst) | no weak ctrl pts | cond < 1e8 | time median s |\n",
+    std::printf("\n%s\n\n| method | regions | failed | data goal | data max vs input (median) | data max vs truth (median) | band truth->fit (median / worst) | no weak ctrl pts | cond < 1e8 | valid face | time median s |\n",
                 title.c_str());
-    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (size_t mi = 0; mi < methods.size(); ++mi) {
-      int n = 0, failed = 0, goal = 0, noWeak = 0, cond = 0;
+      int n = 0, failed = 0, goal = 0, noWeak = 0, cond = 0, valid = 0, faces = 0;
       std::vector<double> dm, tm, bd, tt;
       for (const Row& r : rows) {
         if (!keep(r)) continue;
@@ -622,12 +634,14 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
         goal += r.truthMax[mi] <= limit;
         noWeak += m.weak == 0;
         cond += m.log10Cond < 8;
+        faces += m.validFace >= 0, valid += m.validFace == 1;
         dm.push_back(m.dataMax), tm.push_back(r.truthMax[mi]), bd.push_back(m.truthToFit), tt.push_back(m.seconds);
       }
       const double worst = bd.empty() ? 0 : *std::max_element(bd.begin(), bd.end());
       auto pct = [&](int k) { return std::to_string(static_cast<int>(std::lround(100.0 * k / std::max(1, n)))) + "%"; };
-      std::printf("| %s | %d | %d | %s | %.2e | %.2e | %.3f / %.3f | %s | %s | %.2f |\n", methods[mi].c_str(), n, failed, pct(goal).c_str(),
-                  median(dm), median(tm), median(bd), worst, pct(noWeak).c_str(), pct(cond).c_str(), median(tt));
+      // Valid faces of all regions (a failed fit gave none); "-" for the anchors, which trim none.
+      std::printf("| %s | %d | %d | %s | %.2e | %.2e | %.3f / %.3f | %s | %s | %s | %.2f |\n", methods[mi].c_str(), n, failed, pct(goal).c_str(),
+                  median(dm), median(tm), median(bd), worst, pct(noWeak).c_str(), pct(cond).c_str(), faces ? pct(valid).c_str() : "-", median(tt));
     }
   };
   table("All regions", [](const Row&) { return true; });
@@ -717,7 +731,7 @@ int main(int argc, char** argv) {
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
         if (mi <= 3) {
-          s = fitBy(mi, c.region.mesh, c.region.segments, fittedUV);
+          s = fitBy(mi, c.region.mesh, c.region.segments, fittedUV, m.validFace);
           m.seconds = seconds(t0);
           if ((k == 0 || k == 7) && mi != 2) {
             const char* tag[4] = {"ours", "ours_noext", "", "thinplate"};

@@ -41,11 +41,12 @@ expect_error "contradictory labels" "labeled both North and South" "$T/region.ob
 expect_error "unknown label" "not N, E, S or W" "$T/region.obj" --labels "$T/badlabel.json"
 expect_error "broken JSON" "not valid JSON" "$T/region.obj" --labels "$T/broken.json"
 expect_error "bad --ctrl" "ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 12
-expect_error "bad --extension" "G1, G2 or none" "$T/region.obj" --labels "$T/labels.json" --extension G3
+expect_error "bad --extension" "fit, G2, G1 or none" "$T/region.obj" --labels "$T/labels.json" --extension G3
+expect_error "mesh fairness on the fitted extension" "ask for extension G2 or G1" "$T/region.obj" --labels "$T/labels.json" --mesh-fairness 0.01
 expect_error "negative --mesh-fairness" "non-negative number" "$T/region.obj" --labels "$T/labels.json" --mesh-fairness -1
-if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --mesh-fairness 0.01 --out "$T/fit_emesh.brep" --json \
+if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --extension G2 --mesh-fairness 0.01 --out "$T/fit_emesh.brep" --json \
      >"$T/fit_emesh.json" 2>"$T/err"; then ok "fit with mesh fairness (E_Mesh)"; else bad "fit --mesh-fairness: $(cat "$T/err")"; fi
-for ext in G2 none; do
+for ext in fit G2 none; do
   if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --extension $ext --out "$T/fit_$ext.brep" \
        --untrimmed-out "$T/untrimmed_$ext.brep" --json >"$T/fit_$ext.json" 2>"$T/err"; then ok "fit with extension $ext"; else bad "fit $ext: $(cat "$T/err")"; fi
 done
@@ -53,6 +54,9 @@ done
 import json, sys
 t = sys.argv[1]
 g2, none = json.load(open(t + "/fit_G2.json")), json.load(open(t + "/fit_none.json"))
+fit = json.load(open(t + "/fit_fit.json"))  # the default: extension sampled from a thin-plate fit
+assert fit["face_valid"] and fit["extended_vertices"] > 0 and fit["weak_control_points"] == 0 and fit["data_max"] < 5e-3, fit
+assert fit["log10_condition"] < none["log10_condition"], (fit, none)
 assert g2["face_valid"] and none["face_valid"], (g2, none)
 assert g2["flipped_triangles"] == 0 and g2["extended_vertices"] > 0, g2
 assert g2["weak_control_points"] == 0 and none["weak_control_points"] > 0, (g2, none)
@@ -63,7 +67,7 @@ PY
 [ -s "$T/untrimmed_G2.brep" ] && ok "untrimmed surface written" || bad "no untrimmed surface"
 # Control points chosen by the data: from 5x5, refined while the data max exceeds the tolerance.
 expect_error "an unknown --isocurves" "--isocurves" "$T/region.obj" --labels "$T/labels.json" --isocurves wiggly
-if "$H" fit "$T/region.obj" --labels "$T/labels.json" --isocurves paper --out "$T/fit_paper_iso.brep" >/dev/null 2>"$T/err" && [ -s "$T/fit_paper_iso.brep" ]; then
+if "$H" fit "$T/region.obj" --labels "$T/labels.json" --extension G2 --isocurves paper --out "$T/fit_paper_iso.brep" >/dev/null 2>"$T/err" && [ -s "$T/fit_paper_iso.brep" ]; then
   ok "fit with the paper's isocurve fairness"; else bad "fit --isocurves paper: $(cat "$T/err")"; fi
 expect_error "--max-ctrl below --ctrl" "--max-ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
 expect_error "zero --tolerance" "--tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0

@@ -48,9 +48,12 @@ def test_a_labeled_region_becomes_one_trimmed_face():
     assert alone["weak_control_points"] > 0 and alone["log10_condition"] > rep["log10_condition"], alone
     # The paper's mesh fairness (E_Mesh) through the Python door: it changes the extension and
     # keeps the fit sound; a negative weight is refused.
-    fair = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), meshFairness=1e-2)[2]
+    g2 = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), extension="G2")[2]
+    fair = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), extension="G2", meshFairness=1e-2)[2]
     assert fair["weak_control_points"] == 0 and fair["data_max"] < 5e-3, fair
-    assert fair["extended"][0].tolist() != rep["extended"][0].tolist(), "meshFairness changed nothing"
+    assert fair["extended"][0].tolist() != g2["extended"][0].tolist(), "meshFairness changed nothing"
+    # On the default extension (sampled from a thin-plate fit) it would change nothing: refused.
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, meshFairness=1e-2), "ask for extension G2 or G1")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, meshFairness=-1), "zero or positive")
     # Control points chosen by the data through the Python door; exactly the given ones with
     # maxControl=0; a maximum below the start is refused.
@@ -67,7 +70,7 @@ def test_bad_labels_give_clear_errors():
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("N", labels[0][1]), ("S", labels[0][1])]), "labeled both")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("Q", labels[0][1]), labels[1]]), "not N, E, S or W")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [labels[0]]), "at least two")
-    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, extension="G7"), "G1, G2 or none")
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, extension="G7"), "fit, G2, G1 or none")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(Mesh.Mesh(), labels), "empty")
 
 

@@ -27,12 +27,14 @@ def _labelsJson(labels):
     return json.dumps({"segments": [{"label": str(l), "vertices": [int(v) for v in vs]} for l, vs in labels]})
 
 
-def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
+def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
                meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
-    S, W. extension: "G2" (default), "G1" or "none" (fit the region alone, for comparison).
-    Weights: fairness (isocurve fairness of the extension, relative to its polyharmonic energy),
+    S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
+    thin-plate fit of the region), "G2" or "G1" (the paper's continuation of the boundary, which
+    fairness and meshFairness shape), or "none" (fit the region alone, for comparison).
+    Weights: fairness (isocurve fairness of the continuation, relative to its polyharmonic energy),
     smoothing (thin-plate term of the fit), framePlacement (how firmly labeled vertices keep the
     guiding frame's placement along their sides), meshFairness (the paper's E_Mesh: how evenly the
     extension's triangles are distorted from their neighbours; 0 leaves it out). Control points:
@@ -220,9 +222,17 @@ class LabeledFitFeature:
         add("App::PropertyLink", "Labels", "Fit", "The boundary labels (and through them the mesh region)")
         add("App::PropertyIntegerConstraint", "ControlPointsU", "Fit", "Control points along u (cubic, at least 4)", (12, 4, 200, 1))
         add("App::PropertyIntegerConstraint", "ControlPointsV", "Fit", "Control points along v (cubic, at least 4)", (12, 4, 200, 1))
+        choices = ["fit", "G2", "G1", "none"]
         if "Extension" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Extension", "Fit", "Extension to the four-sided domain: G2, G1 or none")
-            obj.Extension = ["G2", "G1", "none"]
+            obj.addProperty("App::PropertyEnumeration", "Extension", "Fit",
+                            "Extension to the four-sided domain: sampled from a thin-plate fit of the region (fit), the "
+                            "paper's continuation of its boundary (G2, G1), or none")
+            obj.Extension = choices
+        elif "fit" not in obj.getEnumerationsOfProperty("Extension"):
+            # A document saved before "fit" existed keeps its choice, with the new one offered.
+            kept = obj.Extension
+            obj.Extension = choices
+            obj.Extension = kept
         add("App::PropertyIntegerConstraint", "Margin", "Fit", "Grid layers added around the domain", (0, 0, 50, 1))
         add("App::PropertyFloat", "Fairness", "Weights", "Isocurve fairness of the extension", 1e-2)
         add("App::PropertyFloat", "Smoothing", "Weights", "Thin-plate term of the fit", 1e-6)
@@ -263,7 +273,7 @@ class LabeledFitFeature:
         return None
 
 
-def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="G2", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
+def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
                    meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD

@@ -7,29 +7,6 @@
 
 using namespace holefill;
 
-TEST(Polygon2d, MeanValueCoordinatesReproduceLinearFunctions) {
-  // A non-convex polygon: MVC stay well defined inside it.
-  const Polygon2 p = {{0, 0}, {4, 0}, {4, 3}, {2, 1}, {0, 3}};
-  for (const Eigen::Vector2d x : {Eigen::Vector2d(1, 0.5), Eigen::Vector2d(3.2, 1.5), Eigen::Vector2d(0.5, 2.0)}) {
-    ASSERT_TRUE(contains(p, x));
-    const Eigen::VectorXd w = meanValueCoordinates(p, x);
-    EXPECT_NEAR(w.sum(), 1.0, 1e-12);
-    Eigen::Vector2d r = Eigen::Vector2d::Zero();
-    for (int i = 0; i < w.size(); ++i) r += w(i) * p[i];
-    EXPECT_LT((r - x).norm(), 1e-12);
-  }
-}
-
-TEST(Polygon2d, OrientationAndSelfIntersection) {
-  const Polygon2 square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  EXPECT_NEAR(signedArea(square), 1.0, 1e-15);
-  EXPECT_FALSE(selfIntersects(square));
-  const Polygon2 bowtie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
-  EXPECT_TRUE(selfIntersects(bowtie));
-  const Polygon2 withRepeats = {{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
-  EXPECT_FALSE(selfIntersects(withRepeats));
-}
-
 namespace {
 // Samples of a polygonal loop through the corners, 11 per side (ends included), a corner at each.
 std::vector<BoundarySample> polygonLoop(Hole& hole, const std::vector<Eigen::Vector3d>& corners) {
@@ -114,11 +91,4 @@ TEST(Parameterizer, DegenerateLoopIsAClearError) {
       s.push_back(x);
     }
   EXPECT_THROW(parameterize(hole, s, ParamMethod::NearestPlane), Error);
-}
-
-TEST(Polygon2d, LoopsCross) {
-  const Polygon2 square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
-  EXPECT_FALSE(loopsCross(square, Polygon2{{0.5, 0.5}, {1.5, 0.5}, {1, 1.5}}));  // inside, apart
-  EXPECT_FALSE(loopsCross(square, Polygon2{{3, 0}, {4, 0}, {4, 1}}));           // outside, apart
-  EXPECT_TRUE(loopsCross(square, Polygon2{{1, 1}, {3, 1}, {3, 1.5}}));          // through the east side
 }

@@ -180,14 +180,27 @@ TEST(LabeledFit, AnExtensionThatPullsTheFitOffNoisyDataIsLoweredOrLeftOut) {
   std::normal_distribution<double> noise(0, 0.002 * diagonal);
   for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
     for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
+  // The paper's continuation carries the noise out (a Cauchy problem), and the guard catches it.
   LabeledFitOptions o;
+  o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation;
   const LabeledFitResult r = fitLabeled(region, labels, o);
   o.extend = false;
   const LabeledFitResult bare = fitLabeled(region, labels, o);
-  std::printf("noisy bitten corner: data max %.2e (without extension %.2e)\n", r.fit.dataMax, bare.fit.dataMax);
+  // The default extension, sampled from a thin-plate fit of the region, has nothing to carry out.
+  const LabeledFitResult fitted = fitLabeled(region, labels, LabeledFitOptions{});
+  std::printf("noisy bitten corner: data max %.2e (continuation), %.2e (fitted extension), %.2e without extension\n", r.fit.dataMax,
+              fitted.fit.dataMax, bare.fit.dataMax);
   EXPECT_TRUE(warns(r, "pulled the fit off"));
   EXPECT_LT(r.fit.dataMax, 2 * bare.fit.dataMax);
   EXPECT_TRUE(r.fit.valid);
+  EXPECT_FALSE(warns(fitted, "pulled the fit off"));
+  EXPECT_GT(fitted.extension.mesh.vertices.rows(), region.vertices.rows());
+  EXPECT_LT(fitted.fit.dataMax, 1.2 * bare.fit.dataMax);
+  EXPECT_TRUE(fitted.fit.valid);
+  // Mesh fairness shapes only the continuation: on the fitted extension it is refused.
+  LabeledFitOptions withFairness;
+  withFairness.extension.meshFairness = 1e-2;
+  EXPECT_THROW(fitLabeled(region, labels, withFairness), Error);
 }
 
 // A side that bends smoothly away from its line (a disk's quarter arcs, meshed in rings so that
@@ -244,3 +257,4 @@ TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
   EXPECT_EQ(refined.fit.weakControlPoints, 0);
   EXPECT_LT(refined.fit.log10Condition, 8);
 }
+

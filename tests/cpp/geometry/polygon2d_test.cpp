@@ -1,0 +1,80 @@
+#include "geometry/polygon2d.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+using namespace holefill;
+
+TEST(Polygon2d, MeanValueCoordinatesReproduceLinearFunctions) {
+  // A non-convex polygon: MVC stay well defined inside it.
+  const Polygon2 p = {{0, 0}, {4, 0}, {4, 3}, {2, 1}, {0, 3}};
+  for (const Eigen::Vector2d x : {Eigen::Vector2d(1, 0.5), Eigen::Vector2d(3.2, 1.5), Eigen::Vector2d(0.5, 2.0)}) {
+    ASSERT_TRUE(contains(p, x));
+    const Eigen::VectorXd w = meanValueCoordinates(p, x);
+    EXPECT_NEAR(w.sum(), 1.0, 1e-12);
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+    for (int i = 0; i < w.size(); ++i) r += w(i) * p[i];
+    EXPECT_LT((r - x).norm(), 1e-12);
+  }
+}
+
+TEST(Polygon2d, OrientationAndSelfIntersection) {
+  const Polygon2 square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_NEAR(signedArea(square), 1.0, 1e-15);
+  EXPECT_FALSE(selfIntersects(square));
+  const Polygon2 bowtie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  EXPECT_TRUE(selfIntersects(bowtie));
+  const Polygon2 withRepeats = {{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+  EXPECT_FALSE(selfIntersects(withRepeats));
+}
+
+TEST(Polygon2d, LoopsCross) {
+  const Polygon2 square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  EXPECT_FALSE(loopsCross(square, Polygon2{{0.5, 0.5}, {1.5, 0.5}, {1, 1.5}}));  // inside, apart
+  EXPECT_FALSE(loopsCross(square, Polygon2{{3, 0}, {4, 0}, {4, 1}}));           // outside, apart
+  EXPECT_TRUE(loopsCross(square, Polygon2{{1, 1}, {3, 1}, {3, 1.5}}));          // through the east side
+}
+
+TEST(Polygon2d, CrossingEdgesNamesTheEdgesThatCross) {
+  // A loop that dips below its first edge: edges 2 and 3 run down through edge 0 and back.
+  const Polygon2 dip = {{0, 0}, {2, 0}, {2, 1}, {1, -1}, {0, 1}};
+  auto c = crossingEdges({dip});
+  ASSERT_EQ(c.size(), 2u);
+  std::vector<size_t> others;
+  for (const auto& [e, f] : c) {
+    EXPECT_EQ(std::min(e.edge, f.edge), 0u);
+    others.push_back(std::max(e.edge, f.edge));
+  }
+  std::sort(others.begin(), others.end());
+  EXPECT_EQ(others, (std::vector<size_t>{2, 3}));
+  // Between loops: a square and a triangle through its east side, two crossings, none within.
+  const Polygon2 square{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, tri{{1, 1}, {3, 1}, {3, 1.5}};
+  const auto between = crossingEdges({square, tri});
+  ASSERT_EQ(between.size(), 2u);
+  for (const auto& [e, f] : between) {
+    EXPECT_NE(e.loop, f.loop);
+    EXPECT_EQ((e.loop == 0 ? e : f).edge, 1u);  // the square's east side
+  }
+  EXPECT_EQ(crossingEdges({square, tri}, 1).size(), 1u);  // the limit
+}
+
+TEST(Polygon2d, CrossingEdgesOnALargeLoopFindsTheOneCrossing) {
+  // 20,000 edges on a wavy circle; two consecutive vertices swapped make their chords cross (the
+  // ends interleave along the arc).
+  Polygon2 loop;
+  const int n = 20000;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n, r = 1 + 0.01 * std::sin(40 * t);
+    loop.emplace_back(r * std::cos(t), r * std::sin(t));
+  }
+  EXPECT_TRUE(crossingEdges({loop}).empty());
+  std::swap(loop[5000], loop[5001]);
+  const auto c = crossingEdges({loop});
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(std::min(c[0].first.edge, c[0].second.edge), 4999u);
+  EXPECT_EQ(std::max(c[0].first.edge, c[0].second.edge), 5001u);
+}
