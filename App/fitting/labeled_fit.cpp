@@ -7,6 +7,7 @@
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
 #include "geometry/json_writer.h"
+#include "mesh/scan_noise.h"
 
 namespace holefill {
 
@@ -104,7 +105,21 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     return std::string(line);
   };
   r.refinements.push_back(describe(fo, r.fit));
+  // Refined while the data max exceeds the tolerance, unless what is left is noise: a fit whose
+  // data rms is within 1.5 σ of the scan noise (mesh/scan_noise.h) leaves at most 1.1 σ of model
+  // error, and more control points would follow the noise (Morozov's discrepancy principle). A
+  // clean region is refined as long as the max falls: its misses are local (a horn, a reflex
+  // corner) and hardly move the rms, which the earlier rule (stop unless the rms falls by a third)
+  // read as noise.
+  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
+  r.noise = diagonal > 0 ? estimateScanNoise(region).sigma / diagonal : 0;
   while (o.maxControl > 0 && r.fit.dataMax > o.tolerance) {
+    if (r.fit.dataRms <= 1.5 * r.noise) {
+      char line[160];
+      std::snprintf(line, sizeof line, "stopped: the data rms is within 1.5 times the scan noise (%.2e of the diagonal)", r.noise);
+      r.refinements.push_back(line);
+      break;
+    }
     TensorFitOptions next = fo;
     next.controlU = std::min(o.maxControl, (3 * fo.controlU + 1) / 2);
     next.controlV = std::min(o.maxControl, (3 * fo.controlV + 1) / 2);
@@ -118,8 +133,8 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
       r.refinements.push_back("stopped: weak control points or ill-conditioned; the previous kept");
       break;
     }
-    if (!(t.dataRms < r.fit.dataRms * (2.0 / 3.0))) {
-      r.refinements.push_back("stopped: the data rms fell by less than a third (noise); the previous kept");
+    if (!(t.dataMax < r.fit.dataMax) && !(t.dataRms < r.fit.dataRms * (2.0 / 3.0))) {
+      r.refinements.push_back("stopped: neither the data max nor the rms fell; the previous kept");
       break;
     }
     r.fit = std::move(t);
@@ -159,6 +174,7 @@ std::string LabeledFitResult::toJson() const {
       .field("weak_control_points", fit.weakControlPoints)
       .field("log10_condition", fit.log10Condition)
       .field("parameter_corrections", fit.correctionRounds)
+      .field("noise_estimate", noise)
       .field("face_valid", fit.valid)
       .field("seconds", seconds)
       .field("refinements", refinements)

@@ -35,10 +35,11 @@ struct LabeledFitOptions {
   // Control points chosen by the data: from the larger of fit.controlU and fit.controlV along the
   // rectangle's longer side and as many as keep the cells square along the other (4 at least),
   // refined by half again per
-  // direction while the region's data max exceeds `tolerance` (of its diagonal), up to maxControl
-  // per direction. A refinement is undone, and ends the search, when it brings weak control
-  // points or a condition of 1e8 or more, or does not cut the data RMS by a third (what is left is
-  // noise, which more control points would follow). maxControl 0: exactly fit.controlU × controlV.
+  // direction while the region's data max exceeds `tolerance` (of its diagonal) and its data RMS
+  // exceeds 1.5 times the region's scan noise (what is left is then noise, which more control
+  // points would follow), up to maxControl per direction. A refinement is undone, and ends the
+  // search, when it brings weak control points or a condition of 1e8 or more, or lowers neither
+  // the data max nor (by a third) the RMS. maxControl 0: exactly fit.controlU × controlV.
   double tolerance = 1e-3;
   int maxControl = 40;
 };
@@ -48,6 +49,7 @@ struct LabeledFitResult {
   DomainExtension extension;         // empty when not extended
   TensorFitResult fit;
   std::vector<std::string> refinements;  // control points tried, with their data max, and why the search stopped
+  double noise = 0;                      // the region's scan noise σ (mesh/scan_noise.h) / its diagonal
   std::vector<std::string> warnings;     // the fit's own (an extension given up); allWarnings() adds the parameterization's
   std::vector<std::string> allWarnings() const;
   double seconds = 0;

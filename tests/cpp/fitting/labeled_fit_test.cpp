@@ -258,3 +258,35 @@ TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
   EXPECT_LT(refined.fit.log10Condition, 8);
 }
 
+
+// Control points stop being added where what the fit leaves is the scan noise (the discrepancy
+// principle): the region's noise is estimated from the mesh alone, and a fit whose data rms is
+// within 1.5 times it is kept. The same region clean is refined further, while its max falls.
+TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
+  Eigen::MatrixX2d truth;
+  TriangleMesh region = testregions::gridRegion(40, 40, 0.025, [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }, halfCylinder,
+                                                truth);
+  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  LabeledFitOptions o;
+  o.fit.controlU = o.fit.controlV = 5;
+  const LabeledFitResult clean = fitLabeled(region, labels, o);
+  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0, 0.002 * diagonal);
+  for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
+    for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
+  const LabeledFitResult noisy = fitLabeled(region, labels, o);
+  std::printf("bitten half cylinder from 5x5: clean %dx%d (noise %.1e), 0.2%% noise %dx%d (noise estimated %.2e), data rms %.2e\n",
+              clean.fit.surface.numU(), clean.fit.surface.numV(), clean.noise, noisy.fit.surface.numU(), noisy.fit.surface.numV(), noisy.noise,
+              noisy.fit.dataRms);
+  EXPECT_LT(clean.noise, 1e-5);
+  EXPECT_NEAR(noisy.noise, 0.002, 0.0003);
+  EXPECT_NE(noisy.refinements.back().find("scan noise"), std::string::npos) << noisy.refinements.back();
+  EXPECT_LE(noisy.fit.dataRms, 1.5 * noisy.noise);
+  for (const std::string& line : clean.refinements) std::printf("  clean: %s\n", line.c_str());
+  // Clean, the misses are local (the bite's ends): 12x12 → 18x18 lowers the max 1.76e-3 → 1.54e-3
+  // but the rms by less than a third, where the rule before this stopped, reading it as noise.
+  EXPECT_GE(clean.fit.surface.numU(), 18);
+  EXPECT_LT(clean.fit.dataMax, 1.6e-3);
+  EXPECT_GT(clean.fit.surface.numU() * clean.fit.surface.numV(), noisy.fit.surface.numU() * noisy.fit.surface.numV());
+}
