@@ -100,9 +100,10 @@ class FitPanel:
         finally:
             QtWidgets.QApplication.restoreOverrideCursor()
         r = self.result[2]
-        self.status.setText("Data max %.2e, RMS %.2e (of the region's diagonal); %d weak control points; log10 condition %.1f; "
-                            "%d extension vertices; face %s; %.2f s%s" % (
-                                r["data_max"], r["data_rms"], r["weak_control_points"], r["log10_condition"], r["extended_vertices"],
+        self.status.setText("Data max %.2e, RMS %.2e (of the region's diagonal; scan noise %.2e); %d weak control points; "
+                            "log10 condition %.1f; %d extension vertices; face %s; %.2f s%s" % (
+                                r["data_max"], r["data_rms"], r["noise_estimate"], r["weak_control_points"], r["log10_condition"],
+                                r["extended_vertices"],
                                 "valid" if r["face_valid"] else "INVALID", r["seconds"],
                                 "".join("\nwarning: " + w for w in r["warnings"])))
         self.draw()

@@ -519,8 +519,9 @@ int cmdFit(const Args& a) {
     std::printf("domain %.6g x %.6g (guiding frame degree %d), %d flipped triangles, %d extension vertices\n", r.parameterization.width,
                 r.parameterization.height, r.parameterization.frame.degree, r.parameterization.flippedTriangles,
                 static_cast<int>(r.extension.mesh.vertices.rows()) - r.extension.regionVertices);
-    std::printf("fit %dx%d: data max %.2e, rms %.2e of the region's diagonal; %d weak control points; log10 condition %.1f; face %s; %.2f s\n",
-                r.fit.surface.numU(), r.fit.surface.numV(), r.fit.dataMax, r.fit.dataRms, r.fit.weakControlPoints, r.fit.log10Condition,
+    std::printf("fit %dx%d: data max %.2e, rms %.2e of the region's diagonal (scan noise %.2e); %d weak control points; log10 condition %.1f; "
+                "face %s; %.2f s\n",
+                r.fit.surface.numU(), r.fit.surface.numV(), r.fit.dataMax, r.fit.dataRms, r.noise, r.fit.weakControlPoints, r.fit.log10Condition,
                 r.fit.valid ? "valid" : "INVALID", r.seconds);
   }
   for (const auto& w : r.allWarnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
