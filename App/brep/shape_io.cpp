@@ -38,9 +38,42 @@ bool finitePoint(const gp_Pnt& p) {
          std::abs(p.Z()) < tol::kMaxCoordinate;
 }
 
+// OCCT's BREP reader loops for ever on a file cut off inside its TShapes section (it waits for
+// each shape's "*"-terminated list of sub-shapes, and at the end of the stream it reads nothing,
+// again and again), and it reads text with NUL bytes in it as if they ended a token. So the text
+// is checked first: no NUL byte, a "TShapes N" section with N sub-shape lists ("*" ends each)
+// and, after the last, the reference of the shape itself (an oriented index and a location).
+void checkBrepText(const std::string& text, const std::string& name) {
+  if (text.find('\0') != std::string::npos) throw Error(name + " is not a valid BREP file: it has NUL bytes in it (a binary or damaged file)");
+  const size_t at = text.find("\nTShapes ");
+  if (at == std::string::npos) throw Error(name + " is not a valid BREP file: it has no TShapes section (cut off, or not BREP)");
+  std::istringstream in(text.substr(at + 9));
+  long long count = -1;
+  if (!(in >> count) || count < 0) throw Error(name + " is not a valid BREP file: its TShapes count is not a number");
+  long long lists = 0;
+  std::string token, last, beforeLast;
+  while (in >> token) {
+    if (token == "*") ++lists;
+    beforeLast = last;
+    last = token;
+  }
+  const auto isIndex = [](const std::string& t, bool signedRef) {
+    size_t k = 0;
+    if (signedRef) {
+      if (t.empty() || (t[0] != '+' && t[0] != '-')) return false;
+      k = 1;
+    }
+    return t.size() > k && t.find_first_not_of("0123456789", k) == std::string::npos;
+  };
+  if (lists < count || !isIndex(last, false) || !isIndex(beforeLast, true))
+    throw Error(name + " is not a valid BREP file: it ends inside its TShapes section (" + std::to_string(lists) + " of " + std::to_string(count) +
+                " shapes, then " + (isIndex(last, false) && isIndex(beforeLast, true) ? "the shape" : "no shape") + "): the file was cut off");
+}
+
 TopoDS_Shape readInProcess(const std::string& path, const std::string& ext) {
   TopoDS_Shape shape;
   if (ext == "brep" || ext == "brp") {
+    checkBrepText(readFileBytes(path), "'" + path + "'");
     BRep_Builder b;
     // OCCT's BREP reader says what it could not parse on std::cout, which would corrupt the
     // CLI's --json output: it is caught here and becomes part of the error instead.
@@ -182,6 +215,7 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
 
 TopoDS_Shape shapeFromBrepString(const std::string& brep) {
   if (brep.empty()) throw Error("empty BREP text: the shape is empty");
+  checkBrepText(brep, "the BREP text");
   std::istringstream in(brep);
   TopoDS_Shape s;
   BRep_Builder b;

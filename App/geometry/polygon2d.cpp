@@ -56,7 +56,10 @@ std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polyg
       if (spans[j].ymin > spans[i].ymax || spans[j].ymax < spans[i].ymin) continue;
       const auto [a, b] = ends(spans[i].e);
       const auto [c, d] = ends(spans[j].e);
-      // Adjacent edges share a vertex and never cross properly; the strict test leaves them out.
+      // Edges that share an end (adjacent ones, or ones a repeated vertex leaves apart: a loop's
+      // corners are often sampled by both edges that meet there, a hair apart) only touch.
+      const auto near = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return (p - q).norm() <= 1e-14; };
+      if (near(a, c) || near(a, d) || near(b, c) || near(b, d)) continue;
       if (segmentsCross(a, b, c, d)) out.push_back({spans[i].e, spans[j].e});
     }
   return out;

@@ -27,6 +27,18 @@ expect_error "empty file" 1 fill "$T/empty.brep" --out "$T/o.brep"
 expect_error "corrupt brep" 1 fill "$T/corrupt.brep" --out "$T/o.brep"
 expect_error "truncated brep" 1 fill "$T/truncated.brep" --out "$T/o.brep"
 expect_error "corrupt step" 1 fill "$T/corrupt.step" --out "$T/o.brep"
+# Cut off inside the TShapes section, OCCT's reader looped for ever (issue 22); and NUL bytes.
+B="$T/filleted_box_corner.brep"
+for pct in 60 80 99; do
+  head -c $(( $(wc -c <"$B") * pct / 100 )) "$B" >"$T/cut$pct.brep"
+  s=$(date +%s)
+  expect_error "brep cut off at $pct% (in TShapes)" 1 holes "$T/cut$pct.brep"
+  [ $(( $(date +%s) - s )) -le 5 ] && pass=$((pass+1)) || { fail=$((fail+1)); echo "FAIL brep cut off at $pct%: took over 5 s"; }
+  grep -q "cut off" "$T/err" || { fail=$((fail+1)); echo "FAIL brep cut off at $pct%: the error does not say so"; }
+done
+{ head -c 2000 "$B"; printf 'x\0y'; tail -c +2004 "$B"; } >"$T/nul.brep"
+expect_error "brep with NUL bytes" 1 holes "$T/nul.brep"
+grep -q "NUL" "$T/err" || { fail=$((fail+1)); echo "FAIL brep with NUL bytes: the error does not say so"; }
 expect_error "unknown extension" 1 holes "$T/x.txt"
 expect_error "bad method" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --method foo
 expect_error "bad continuity" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --continuity G7

@@ -30,6 +30,11 @@ TEST(Polygon2d, OrientationAndSelfIntersection) {
   EXPECT_TRUE(selfIntersects(bowtie));
   const Polygon2 withRepeats = {{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
   EXPECT_FALSE(selfIntersects(withRepeats));
+  // A corner sampled by both its edges a hair apart (as a hole's boundary samples come): the edges
+  // either side of the hair touch there, they do not cross (the fill's parameterizer read such
+  // loops as folded and took another map).
+  const Polygon2 hair = {{0, 0}, {1, 0}, {1 - 1e-15, -1e-15}, {1, 1}, {0, 1}};
+  EXPECT_FALSE(selfIntersects(hair));
 }
 
 TEST(Polygon2d, LoopsCross) {
