@@ -450,7 +450,12 @@ int cmdGnurbs(const Args& a) {
   const GnurbsContinuity c = measureGnurbsContinuity(r);
   const std::string sidecar = out.substr(0, out.size() - ext.size() - 1) + ".faces.json";
   writeShape(b.shape, out);
-  writeFileAtomically(sidecar, b.sidecarJson + "\n");
+  try {
+    writeFileAtomically(sidecar, b.sidecarJson + "\n");
+  } catch (...) {
+    std::remove(out.c_str());  // both files or neither
+    throw;
+  }
   if (a.has("--json")) {
     std::string report = gnurbsReportJson(r, c, &b, seconds);
     if (!fitJson.empty()) report = report.substr(0, report.size() - 1) + ",\"fit\":" + fitJson + "}";
@@ -467,7 +472,9 @@ int cmdGnurbs(const Args& a) {
     std::printf("wrote %s and %s\n", out.c_str(), sidecar.c_str());
   }
   for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  return r.warnings.empty() ? 0 : 3;
+  // An invalid shell is written (to look at) but never passes as a success.
+  if (!b.valid) std::fprintf(stderr, "warning: the B-rep shell is invalid (BRepCheck): do not use it as it is\n");
+  return r.warnings.empty() && b.valid ? 0 : 3;
 }
 
 // Exit 0 when written, 3 when written with warnings (folded triangles, an invalid trimmed face).

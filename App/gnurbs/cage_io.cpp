@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/error.h"
+#include "geometry/tolerances.h"
 #include "geometry/text_file.h"
 
 namespace holefill {
@@ -30,6 +31,16 @@ double finiteNumber(const std::string& tok, const std::string& name, const std::
   double x = 0;
   if (!parseDouble(tok, x)) fail(name, where, "'" + tok + "' is not a number");
   if (!std::isfinite(x)) fail(name, where, "a number is not finite (NaN or infinity)");
+  return x;
+}
+
+// A coordinate: finite and within tol::kMaxCoordinate (the patches' poles are sums of products of
+// the cage's coordinates; at 1e50 they overflowed to infinities and OCCT crashed on them, at
+// 1e150 the shell came out invalid and was written).
+double coordinate(const std::string& tok, const std::string& name, const std::string& where) {
+  const double x = finiteNumber(tok, name, where);
+  if (std::abs(x) > tol::kMaxCoordinate)
+    fail(name, where, "a coordinate beyond " + std::to_string(static_cast<long long>(tol::kMaxCoordinate)) + " (corrupt, or in the wrong units)");
   return x;
 }
 
@@ -103,7 +114,7 @@ QuadCage parseCageObj(const std::string& bytes, const std::string& name) {
     for (std::string tok; ls >> tok;) t.push_back(tok);
     if (tag == "v") {
       if (t.size() < 3) fail(name, where, "a vertex needs three numbers");
-      points.emplace_back(finiteNumber(t[0], name, where), finiteNumber(t[1], name, where), finiteNumber(t[2], name, where));
+      points.emplace_back(coordinate(t[0], name, where), coordinate(t[1], name, where), coordinate(t[2], name, where));
     } else if (tag == "f") {
       if (t.size() != 4)
         fail(name, where, "a face with " + std::to_string(t.size()) + " corners; a G-NURBS cage must be all quads (subdivide other faces first)");
@@ -122,7 +133,7 @@ QuadCage parseCageObj(const std::string& bytes, const std::string& name) {
       } else if (kind == "anchor") {
         if (t.size() != 5) fail(name, where, "use '# anchor i x y z' (1-based vertex number)");
         cage.anchors[vertexIndex(t[1], name, where)] =
-            Eigen::Vector3d(finiteNumber(t[2], name, where), finiteNumber(t[3], name, where), finiteNumber(t[4], name, where));
+            Eigen::Vector3d(coordinate(t[2], name, where), coordinate(t[3], name, where), coordinate(t[4], name, where));
       }
     }
   }
@@ -174,7 +185,13 @@ void addSharpEdgesFromJson(QuadCage& cage, const std::string& text, const std::s
 void addAnchorsFromJson(QuadCage& cage, const std::string& text, const std::string& name) {
   const auto rows = numberRows(text, 4, name);
   QuadCage c = cage;
-  for (size_t r = 0; r < rows.size(); ++r) c.anchors[oneBased(rows[r][0], name, r + 1)] = Eigen::Vector3d(rows[r][1], rows[r][2], rows[r][3]);
+  for (size_t r = 0; r < rows.size(); ++r) {
+    for (int k = 1; k <= 3; ++k)
+      if (std::abs(rows[r][k]) > tol::kMaxCoordinate)
+        throw Error("'" + name + "': entry " + std::to_string(r + 1) + " has a coordinate beyond " +
+                    std::to_string(static_cast<long long>(tol::kMaxCoordinate)) + " (corrupt, or in the wrong units)");
+    c.anchors[oneBased(rows[r][0], name, r + 1)] = Eigen::Vector3d(rows[r][1], rows[r][2], rows[r][3]);
+  }
   CageTopology check(c);
   cage = std::move(c);
 }

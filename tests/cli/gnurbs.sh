@@ -21,6 +21,14 @@ expect_error "isolated vertex" "used by no quad" "$T/isolated.obj"
 expect_error "zero knot interval" "positive" "$T/zero_knot.obj"
 expect_error "non-manifold" "same direction" "$T/nonmanifold.obj"
 expect_error "truncated" "" "$T/truncated.obj"
+# Huge coordinates: at 1e50 the patches' poles overflowed and the CLI crashed (SIGSEGV), at 1e150
+# an invalid shell was written with exit 0 (issue 22).
+for scale in 1e50 1e150 1e300; do
+  awk -v s=$scale '/^v /{printf "v %.17g %.17g %.17g\n", $2*s, $3*s, $4*s; next} {print}' "$T/cage_valence5.obj" >"$T/huge_$scale.obj"
+  expect_error "coordinates at $scale" "coordinate beyond" "$T/huge_$scale.obj"
+done
+echo '[[16, 1e60, 0, 0]]' >"$T/anchor_huge.json"
+expect_error "anchor far away" "coordinate beyond" "$T/cage_valence5.obj" --anchors "$T/anchor_huge.json"
 echo '[[1, 2], [1, 99]]' >"$T/sharp_bad.json"
 expect_error "sharp edge off the cage" "not a cage edge" "$T/cage_valence5.obj" --sharp "$T/sharp_bad.json"
 echo '[[2, 0, 0, 1]]' >"$T/anchor_regular.json"
