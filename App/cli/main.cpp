@@ -76,8 +76,9 @@ const char* kUsage =
     "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
     "  holefill mesh-holes MESH [--json]\n"
     "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine]\n"
-    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--merge-regular] [--json]\n"
-    "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
+    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--merge-regular]\n"
+    "                [--max-valence N] [--json]\n"
+    "                G² surface over a quad cage (EPs of valence above N, 24, refused; 0: no limit); '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension fit|G2|G1|none]\n"
@@ -412,6 +413,11 @@ int cmdGnurbs(const Args& a) {
   if (a.has("--anchors")) addAnchorsFromJson(cage, readFileBytes(a.get("--anchors"), 1 << 26), a.get("--anchors"));
   G2GnurbsOptions o;
   o.refineWhenNeeded = !a.has("--no-refine");
+  if (a.has("--max-valence")) {
+    const double m = number(a.get("--max-valence"), "--max-valence");
+    if (!(m >= 0) || m != std::floor(m)) throw Error("--max-valence must be a whole number, 0 for no limit");
+    o.maxValence = static_cast<int>(m);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   std::string fitJson;
   G2GnurbsResult r;

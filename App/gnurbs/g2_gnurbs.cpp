@@ -395,6 +395,13 @@ G2GnurbsResult G2GnurbsBuilder::build(const QuadCage& input) {
   const G2GnurbsOptions& options = options_;
   G2GnurbsResult result;
   result.cage = input;
+  if (options.maxValence > 0) {
+    const CageTopology topo(input);
+    for (int v : topo.extraordinaryPoints())
+      if (topo.valence(v) > options.maxValence)
+        throw Error("vertex " + std::to_string(v + 1) + " has valence " + std::to_string(topo.valence(v)) + ", above the limit of " +
+                    std::to_string(options.maxValence) + " (its solve grows as the valence to the 3.5th power: split it, or raise the limit)");
+  }
   for (;;) {
     const std::string why = refinementNeed(result.cage, CageTopology(result.cage));
     if (why.empty()) break;

@@ -27,6 +27,26 @@ for scale in 1e50 1e150 1e300; do
   awk -v s=$scale '/^v /{printf "v %.17g %.17g %.17g\n", $2*s, $3*s, $4*s; next} {print}' "$T/cage_valence5.obj" >"$T/huge_$scale.obj"
   expect_error "coordinates at $scale" "coordinate beyond" "$T/huge_$scale.obj"
 done
+# A valence-50 vertex took 32 s (issue 22: "no exit within 60 s"): refused at once above the
+# documented limit (24 by default) or one given.
+"$PY" - "$T" <<'PY'
+import math, sys
+for n in (30, 50):
+    with open("%s/valence%d.obj" % (sys.argv[1], n), "w") as f:
+        for k in range(n):
+            f.write("v %r %r 0\n" % (math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n)))
+        for k in range(n):
+            a = 2 * math.pi * (k + 0.5) / n
+            f.write("v %r %r 0.1\n" % (1.3 * math.cos(a), 1.3 * math.sin(a)))
+        f.write("v 0 0 0\n")
+        for k in range(n):
+            f.write("f %d %d %d %d\n" % (2 * n + 1, k + 1, n + k + 1, (k + 1) % n + 1))
+PY
+s=$(date +%s)
+expect_error "valence 50" "above the limit of 24" "$T/valence50.obj"
+[ $(( $(date +%s) - s )) -le 5 ] && ok "valence 50 refused within 5 s" || bad "valence 50 took over 5 s to refuse"
+expect_error "valence 30 under a lower limit" "above the limit of 20" "$T/valence30.obj" --max-valence 20
+expect_error "a limit that is not whole" "whole number" "$T/valence30.obj" --max-valence 1.5
 echo '[[16, 1e60, 0, 0]]' >"$T/anchor_huge.json"
 expect_error "anchor far away" "coordinate beyond" "$T/cage_valence5.obj" --anchors "$T/anchor_huge.json"
 echo '[[1, 2], [1, 99]]' >"$T/sharp_bad.json"
