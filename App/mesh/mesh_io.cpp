@@ -144,6 +144,9 @@ TriangleMesh parseOff(const std::string& bytes, Builder& b) {
     tk.skipLine();
     b.addPolygon(poly, nv, tk.where());
   }
+  // A body longer than its header says is a file whose header and data disagree: which of the
+  // two is right cannot be told, so neither is trusted.
+  if (tk.next(tok)) b.fail(tk.where(), "more data than the header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) + " faces");
   return b.finish();
 }
 
@@ -259,6 +262,10 @@ TriangleMesh parsePly(const std::string& bytes, Builder& b) {
       }
     }
   }
+  // Data past the declared elements: the header and the body disagree (see parseOff).
+  std::string extra;
+  const bool more = binary ? bytes.find_first_not_of(" \t\r\n", pos) != std::string::npos : tk.next(extra);
+  if (more) b.fail(binary ? "body" : tk.where(), "more data than the header declares (its element counts disagree with the body)");
   return b.finish();
 }
 

@@ -69,6 +69,14 @@ TEST(MeshIo, CorruptFilesGiveClearErrors) {
   EXPECT_NE(message("v 0 0 0\n", "obj").find("no triangles"), std::string::npos);
   EXPECT_NE(message("v 0 0 0", "dxf").find("unsupported"), std::string::npos);
   EXPECT_THROW(readMesh("/nonexistent/x.obj"), Error);
+  // Header and body that disagree (issue 22: a PLY declaring fewer faces than it holds was read
+  // up to its count, and the rest silently dropped).
+  const std::string plyHead = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  EXPECT_NO_THROW(parseMesh(plyHead + "3 0 1 2\n", "ply"));
+  EXPECT_NE(message(plyHead + "3 0 1 2\n3 0 2 3\n", "ply").find("more data than the header"), std::string::npos);
+  EXPECT_NE(message("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n", "off").find("more data than the header"),
+            std::string::npos);
 }
 
 TEST(MeshIo, WritesAtomically) {
