@@ -27,6 +27,14 @@ expect_error "empty file" 1 fill "$T/empty.brep" --out "$T/o.brep"
 expect_error "corrupt brep" 1 fill "$T/corrupt.brep" --out "$T/o.brep"
 expect_error "truncated brep" 1 fill "$T/truncated.brep" --out "$T/o.brep"
 expect_error "corrupt step" 1 fill "$T/corrupt.step" --out "$T/o.brep"
+# A STEP entity referring to one the file does not define: OCCT read it as an empty slot, and the
+# model came back with parts missing and exit 0, or crashed (issue 22).
+"$H" fill "$T/panel_6_sided.brep" --out "$T/good.step" >/dev/null 2>&1
+sed -E "0,/ADVANCED_FACE\\('',\\(#[0-9]+/s//ADVANCED_FACE('',(#999999/" "$T/good.step" >"$T/dangling.step"
+expect_error "step with a dangling reference" 1 holes "$T/dangling.step"
+grep -q "does not define" "$T/err" || { fail=$((fail+1)); echo "FAIL step with a dangling reference: the error does not say so"; }
+awk '/CARTESIAN_POINT/ && !done {done=1; next} {print}' "$T/good.step" >"$T/missing_point.step"
+expect_error "step with an entity removed" 1 holes "$T/missing_point.step"
 # Cut off inside the TShapes section, OCCT's reader looped for ever (issue 22); and NUL bytes.
 B="$T/filleted_box_corner.brep"
 for pct in 60 80 99; do
