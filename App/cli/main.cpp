@@ -214,15 +214,17 @@ int fillAdjacent(const Args& a, const TopoDS_Shape& shape, const HoleFillOptions
   const AdjacentFillResult r = fillAdjacentHoles(shape, edges, TopoDS::Edge(curveEdges(1)), o);
   const int code = r.status == FillStatus::Ok ? 0 : r.status == FillStatus::ToleranceNotMet ? 3 : 2;
   if (code != 2) {
-    writeShape(r.shape, a.get("--out"));
+    OutputSet outputs;
+    outputs.write(a.get("--out"), [&](const std::string& p) { writeShape(r.shape, p); });
     if (a.has("--face-out")) {
       TopoDS_Compound faces;
       BRep_Builder B;
       B.MakeCompound(faces);
       B.Add(faces, r.first.face);
       B.Add(faces, r.second.face);
-      writeShape(faces, a.get("--face-out"));
+      outputs.write(a.get("--face-out"), [&](const std::string& p) { writeShape(faces, p); });
     }
+    outputs.commit();
   }
   if (a.has("--json")) {
     std::cout << toJson(r) << "\n";
@@ -280,8 +282,10 @@ int cmdFill(const Args& a) {
     else if (r.status == FillStatus::ToleranceNotMet && code == 0) code = 3;
   }
   if (code != 2) {
-    writeShape(last.shape, a.get("--out"));
-    if (a.has("--face-out")) writeShape(last.face, a.get("--face-out"));
+    OutputSet outputs;
+    outputs.write(a.get("--out"), [&](const std::string& p) { writeShape(last.shape, p); });
+    if (a.has("--face-out")) outputs.write(a.get("--face-out"), [&](const std::string& p) { writeShape(last.face, p); });
+    outputs.commit();
   }
   if (a.has("--json")) {
     std::cout << "[";
@@ -441,7 +445,6 @@ int cmdGnurbs(const Args& a) {
         .field("seconds", f.seconds)
         .endObject();
     fitJson = j.str();
-    if (a.has("--cage-out")) writeFileAtomically(a.get("--cage-out"), formatCageObj(cage));
     if (!a.has("--json"))
       std::printf("fit to %s: d_max %.4f%%, d_avg %.5f%% of the target's diagonal (sharp regions: %.4f%%, %.5f%% over %d points), %.2f s\n",
                   a.get("--fit").c_str(), 100 * f.dMax, 100 * f.dAvg, 100 * f.dMaxSharp, 100 * f.dAvgSharp, f.sharpPoints, f.seconds);
@@ -455,13 +458,11 @@ int cmdGnurbs(const Args& a) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const GnurbsContinuity c = measureGnurbsContinuity(r);
   const std::string sidecar = out.substr(0, out.size() - ext.size() - 1) + ".faces.json";
-  writeShape(b.shape, out);
-  try {
-    writeFileAtomically(sidecar, b.sidecarJson + "\n");
-  } catch (...) {
-    std::remove(out.c_str());  // both files or neither
-    throw;
-  }
+  OutputSet outputs;
+  outputs.write(out, [&](const std::string& p) { writeShape(b.shape, p); });
+  outputs.write(sidecar, [&](const std::string& p) { writeFileAtomically(p, b.sidecarJson + "\n"); });
+  if (a.has("--cage-out")) outputs.write(a.get("--cage-out"), [&](const std::string& p) { writeFileAtomically(p, formatCageObj(cage)); });
+  outputs.commit();
   if (a.has("--json")) {
     std::string report = gnurbsReportJson(r, c, &b, seconds);
     if (!fitJson.empty()) report = report.substr(0, report.size() - 1) + ",\"fit\":" + fitJson + "}";
@@ -524,8 +525,11 @@ int cmdFit(const Args& a) {
   const TriangleMesh region = readMesh(a.input);
   const std::vector<LabeledSegment> labels = parseLabelsJson(readFileBytes(a.get("--labels"), 1 << 26), a.get("--labels"));
   const LabeledFitResult r = fitLabeled(region, labels, o);
-  writeShape(r.fit.face, a.get("--out"));
-  if (a.has("--untrimmed-out")) writeShape(BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face(), a.get("--untrimmed-out"));
+  OutputSet outputs;
+  outputs.write(a.get("--out"), [&](const std::string& p) { writeShape(r.fit.face, p); });
+  if (a.has("--untrimmed-out"))
+    outputs.write(a.get("--untrimmed-out"), [&](const std::string& p) { writeShape(BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face(), p); });
+  outputs.commit();
   if (a.has("--json")) {
     std::cout << r.toJson() << "\n";
   } else {

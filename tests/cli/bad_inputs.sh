@@ -48,6 +48,15 @@ done
 expect_error "brep with NUL bytes" 1 holes "$T/nul.brep"
 grep -q "NUL" "$T/err" || { fail=$((fail+1)); echo "FAIL brep with NUL bytes: the error does not say so"; }
 expect_error "unknown extension" 1 holes "$T/x.txt"
+# A command's files appear all or none: a second output that cannot be written (its folder is a
+# file) left the first written (issue 22). expect_error checks that $T/o.brep is not there.
+expect_error "fill: --face-out under a file" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --face-out "$T/x.txt/face.brep"
+"$H" samples "$T" >/dev/null
+expect_error "fit: --untrimmed-out under a file" 1 fit "$T/labeled_region.obj" --labels "$T/labeled_region.labels.json" --out "$T/o.brep" \
+  --untrimmed-out "$T/x.txt/u.brep"
+expect_error "gnurbs: --cage-out under a file" 1 gnurbs "$T/cage_valence5.obj" --out "$T/o.brep" --fit "$T/cage_valence5.obj" \
+  --cage-out "$T/x.txt/c.obj"
+if [ -e "$T/o.faces.json" ]; then fail=$((fail+1)); echo "FAIL gnurbs: the sidecar was left after a failure"; else pass=$((pass+1)); echo "ok   gnurbs: no sidecar left"; fi
 expect_error "bad method" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --method foo
 expect_error "bad continuity" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --continuity G7
 expect_error "bad edge name" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge0

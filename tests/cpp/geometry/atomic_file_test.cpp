@@ -51,3 +51,35 @@ TEST(AtomicFile, TemporariesKeepTheTargetsExtension) {
   EXPECT_EQ(tmp.substr(tmp.size() - 5), ".step");
   EXPECT_FALSE(commitTemporaryFile("/no/such/tmp.step", "/no/such/part.step"));
 }
+
+TEST(AtomicFile, AnOutputSetAppearsWholeOrNotAtAll) {
+  const fs::path d = scratchDir() / "set";
+  fs::create_directories(d);
+  const fs::path a = d / "model.brep", b = d / "report.json", bad = d / "model.brep" / "face.brep";
+  writeFileAtomically(a.string(), "old model");
+  {
+    // The second file's folder is a file: the first, already staged, must not replace the old one.
+    OutputSet set;
+    set.write(a.string(), [](const std::string& p) { writeFileAtomically(p, "new model"); });
+    try {
+      set.write(bad.string(), [](const std::string& p) { writeFileAtomically(p, "face"); });
+      FAIL() << "a file under a file was written";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(bad.string() + "'"), std::string::npos) << e.what();  // names the target, not the staged name
+    }
+  }
+  EXPECT_EQ(contents(a), "old model");
+  size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(d)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 1u);  // nothing staged was left
+  {
+    OutputSet set;
+    set.write(a.string(), [](const std::string& p) { writeFileAtomically(p, "new model"); });
+    set.write(b.string(), [](const std::string& p) { writeFileAtomically(p, "{}"); });
+    EXPECT_EQ(contents(a), "old model");  // not before commit
+    set.commit();
+  }
+  EXPECT_EQ(contents(a), "new model");
+  EXPECT_EQ(contents(b), "{}");
+  fs::remove_all(d);
+}
