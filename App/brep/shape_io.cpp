@@ -51,11 +51,11 @@ void checkBrepText(const std::string& text, const std::string& name) {
   long long count = -1;
   if (!(in >> count) || count < 0) throw Error(name + " is not a valid BREP file: its TShapes count is not a number");
   long long lists = 0;
-  std::string token, last, beforeLast;
+  std::string token;
+  std::vector<std::string> after;  // the tokens after the last "*"
   while (in >> token) {
-    if (token == "*") ++lists;
-    beforeLast = last;
-    last = token;
+    if (token == "*") ++lists, after.clear();
+    else after.push_back(token);
   }
   const auto isIndex = [](const std::string& t, bool signedRef) {
     size_t k = 0;
@@ -65,9 +65,11 @@ void checkBrepText(const std::string& text, const std::string& name) {
     }
     return t.size() > k && t.find_first_not_of("0123456789", k) == std::string::npos;
   };
-  if (lists < count || !isIndex(last, false) || !isIndex(beforeLast, true))
+  // The shape itself: an oriented index and its location (OCCT 7.6 writes a further flag line).
+  const bool shape = after.size() >= 2 && isIndex(after[0], true) && isIndex(after[1], false);
+  if (lists < count || !shape)
     throw Error(name + " is not a valid BREP file: it ends inside its TShapes section (" + std::to_string(lists) + " of " + std::to_string(count) +
-                " shapes, then " + (isIndex(last, false) && isIndex(beforeLast, true) ? "the shape" : "no shape") + "): the file was cut off");
+                " shapes, then " + (shape ? "the shape" : "no shape") + "): the file was cut off");
 }
 
 TopoDS_Shape readInProcess(const std::string& path, const std::string& ext) {

@@ -38,12 +38,18 @@ std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polyg
   struct Span {
     double xmin, xmax, ymin, ymax;
     LoopEdge e;
+    long long rank;  // among its loop's edges of nonzero length
   };
+  // Edges shorter than 1e-14 are left out, and the two either side of them are adjacent: a loop's
+  // corners are often sampled by both edges that meet there, a hair apart, and those edges only
+  // touch. Adjacent edges share a vertex and never cross properly.
   std::vector<Span> spans;
+  std::vector<long long> ranks(loops.size(), 0);
   for (size_t l = 0; l < loops.size(); ++l)
     for (size_t k = 0; k < loops[l].size(); ++k) {
       const auto &a = loops[l][k], &b = loops[l][(k + 1) % loops[l].size()];
-      spans.push_back({std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), {l, k}});
+      if ((a - b).norm() <= 1e-14) continue;
+      spans.push_back({std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), {l, k}, ranks[l]++});
     }
   std::sort(spans.begin(), spans.end(), [](const Span& p, const Span& q) { return p.xmin < q.xmin; });
   auto ends = [&](const LoopEdge& e) {
@@ -54,12 +60,12 @@ std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polyg
   for (size_t i = 0; i < spans.size() && out.size() < limit; ++i)
     for (size_t j = i + 1; j < spans.size() && spans[j].xmin <= spans[i].xmax && out.size() < limit; ++j) {
       if (spans[j].ymin > spans[i].ymax || spans[j].ymax < spans[i].ymin) continue;
+      if (spans[i].e.loop == spans[j].e.loop) {
+        const long long n = ranks[spans[i].e.loop], d = (spans[i].rank - spans[j].rank + n) % n;
+        if (d == 1 || d == n - 1) continue;
+      }
       const auto [a, b] = ends(spans[i].e);
       const auto [c, d] = ends(spans[j].e);
-      // Edges that share an end (adjacent ones, or ones a repeated vertex leaves apart: a loop's
-      // corners are often sampled by both edges that meet there, a hair apart) only touch.
-      const auto near = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return (p - q).norm() <= 1e-14; };
-      if (near(a, c) || near(a, d) || near(b, c) || near(b, d)) continue;
       if (segmentsCross(a, b, c, d)) out.push_back({spans[i].e, spans[j].e});
     }
   return out;
