@@ -484,7 +484,7 @@ int cmdGnurbs(const Args& a) {
   return r.warnings.empty() && b.valid ? 0 : 3;
 }
 
-// Exit 0 when written, 3 when written with warnings (folded triangles, an invalid trimmed face).
+// Exit 0 when written, 3 when written with warnings (folded triangles, an invalid trimmed face, the data missed).
 int cmdFit(const Args& a) {
   if (a.input.empty()) throw Error("fit: no region mesh given");
   if (!a.has("--labels")) throw Error("fit: --labels LABELS.json is required");
@@ -542,7 +542,7 @@ int cmdFit(const Args& a) {
                 r.fit.valid ? "valid" : "INVALID", r.seconds);
   }
   for (const auto& w : r.allWarnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  return r.parameterization.flippedTriangles > 0 || !r.fit.valid ? 3 : 0;
+  return r.parameterization.flippedTriangles > 0 || !r.fit.valid || !r.metTolerance ? 3 : 0;
 }
 
 // A point-cloud file; bare x y z lines get their boundary found (reported on stderr).

@@ -1,5 +1,6 @@
 #include "fitting/labeled_fit.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -140,6 +141,14 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     r.fit = std::move(t);
     fo = next;
   }
+  r.metTolerance = r.fit.dataMax <= std::max(o.tolerance, 5 * r.noise);
+  if (!r.metTolerance) {
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "the fit misses the region's data: max %.2e of the diagonal, above the tolerance %.2e and 5 times the scan noise (%.2e)",
+                  r.fit.dataMax, o.tolerance, r.noise);
+    r.warnings.push_back(line);
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -175,6 +184,7 @@ std::string LabeledFitResult::toJson() const {
       .field("log10_condition", fit.log10Condition)
       .field("parameter_corrections", fit.correctionRounds)
       .field("noise_estimate", noise)
+      .field("met_tolerance", metTolerance)
       .field("face_valid", fit.valid)
       .field("seconds", seconds)
       .field("refinements", refinements)

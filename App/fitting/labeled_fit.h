@@ -50,6 +50,10 @@ struct LabeledFitResult {
   TensorFitResult fit;
   std::vector<std::string> refinements;  // control points tried, with their data max, and why the search stopped
   double noise = 0;                      // the region's scan noise σ (mesh/scan_noise.h) / its diagonal
+  // The data max within the tolerance, or within 5 σ of the scan noise (the largest of 20,000
+  // normal deviates is about 4.4 σ): what a fit that follows the surface leaves. Otherwise a
+  // warning says by how much it misses, and the CLI exits 3.
+  bool metTolerance = false;
   std::vector<std::string> warnings;     // the fit's own (an extension given up); allWarnings() adds the parameterization's
   std::vector<std::string> allWarnings() const;
   double seconds = 0;

@@ -290,3 +290,25 @@ TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
   EXPECT_LT(clean.fit.dataMax, 1.6e-3);
   EXPECT_GT(clean.fit.surface.numU() * clean.fit.surface.numV(), noisy.fit.surface.numU() * noisy.fit.surface.numV());
 }
+
+// A fit that misses the data says so (the CLI exits 3 on it): 5x5 control points, no refinement,
+// leave 4.6e-3 on the clean bitten half cylinder, above the tolerance 1e-3 and any noise; refined,
+// the verdict follows the data max.
+TEST(LabeledFit, AFitThatMissesTheDataSaysSo) {
+  Eigen::MatrixX2d truth;
+  TriangleMesh region = testregions::gridRegion(40, 40, 0.025, [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }, halfCylinder,
+                                                truth);
+  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  LabeledFitOptions o;
+  o.fit.controlU = o.fit.controlV = 5;
+  o.maxControl = 0;
+  const LabeledFitResult clean = fitLabeled(region, labels, o);
+  EXPECT_GT(clean.fit.dataMax, 1e-3);
+  EXPECT_FALSE(clean.metTolerance);
+  EXPECT_TRUE(warns(clean, "misses the region's data"));
+  EXPECT_NE(clean.toJson().find("\"met_tolerance\":false"), std::string::npos);
+  o.fit.controlU = o.fit.controlV = 12;
+  o.maxControl = 40;
+  const LabeledFitResult refined = fitLabeled(region, labels, o);
+  EXPECT_EQ(refined.metTolerance, refined.fit.dataMax <= 1e-3);
+}
