@@ -144,6 +144,11 @@ def test_bad_inputs_give_clear_errors_and_modify_nothing():
     fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, method="foo"), "unknown method")
     fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, continuity="G5"), "unknown continuity")
     fcharness.expect_error(lambda: HoleFillApp.findHoles("garbage, not BREP"), "BREP")
+    # BREP text cut off inside its shapes made OCCT's reader loop for ever, in FreeCAD's own
+    # process through this door (issue 22): refused at once; and text with a NUL byte in it.
+    text = shape.exportBrepToString()
+    fcharness.expect_error(lambda: HoleFillApp.findHoles(text[: int(len(text) * 0.8)]), "cut off")
+    fcharness.expect_error(lambda: HoleFillApp.findHoles(text[:100] + "\0" + text[101:]), "NUL")
     nan = Part.Vertex(FreeCAD.Vector(float("nan"), 0, 0))
     fcharness.expect_error(lambda: HoleFill.findHoles(Part.Compound([shape.copy(), nan])), "NaN")
     fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, progress=lambda f: f < 0.2), "cancelled")
