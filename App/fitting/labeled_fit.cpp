@@ -8,7 +8,6 @@
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
 #include "geometry/json_writer.h"
-#include "mesh/scan_noise.h"
 
 namespace holefill {
 
@@ -113,7 +112,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   // corner) and hardly move the rms, which the earlier rule (stop unless the rms falls by a third)
   // read as noise.
   const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
-  r.noise = diagonal > 0 ? estimateScanNoise(region).sigma / diagonal : 0;
+  r.noise = diagonal > 0 ? p.noise.sigma / diagonal : 0;
   while (o.maxControl > 0 && r.fit.dataMax > o.tolerance) {
     if (r.fit.dataRms <= 1.5 * r.noise) {
       char line[160];
@@ -155,9 +154,14 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
 
 void setExtensionByName(LabeledFitOptions& o, const std::string& name) {
   o.extend = name != "none";
-  if (name == "fit") o.extensionSource = LabeledFitOptions::ExtensionSource::SmoothFit;
-  else if (name == "G2" || name == "G1") o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation, o.extension.order = name == "G2" ? 3 : 2;
-  else if (name != "none") throw Error("the extension must be fit, G2, G1 or none, got '" + name + "'");
+  if (name == "fit") {
+    o.extensionSource = LabeledFitOptions::ExtensionSource::SmoothFit;
+  } else if (name == "G2" || name == "G1") {
+    o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation;
+    o.extension.order = name == "G2" ? 3 : 2;
+  } else if (name != "none") {
+    throw Error("the extension must be fit, G2, G1 or none, got '" + name + "'");
+  }
 }
 
 std::vector<std::string> LabeledFitResult::allWarnings() const {

@@ -228,9 +228,14 @@ namespace {
 // are left out: they would slide vertices over the surface, and the map would then place each
 // vertex where its smoothed copy went, not where it is (measured: 1.3e-4 → 1.5e-2 on a clean
 // region smoothed in full).
-TriangleMesh denoised(const TriangleMesh& region, int rounds) {
+TriangleMesh denoised(const TriangleMesh& region, int rounds, const ScanNoise& noise) {
   TriangleMesh out = region;
-  if (rounds <= 0) return out;
+  // Only a noisy region is smoothed; a clean one is mapped as it is, exactly (mesh/scan_noise.h;
+  // on every third region of the corpus it estimates the noise to within 5%). The threshold, 0.02
+  // of the mean edge, lies between the corpus's clean and noisy regions: measured with the
+  // median this estimate divides by 0.917, at most 0.001 on the clean ones and 0.028 or more on
+  // the noisy ones.
+  if (rounds <= 0 || !(noise.meanEdge > 0) || noise.sigma < 0.02 * noise.meanEdge) return out;
   const MeshTopology topo(region);
   const MeshHoleReport holes = findMeshHoles(region, topo);
   const Eigen::Index nv = region.vertices.rows();
@@ -266,15 +271,6 @@ TriangleMesh denoised(const TriangleMesh& region, int rounds) {
     for (int u : ring[v]) mean += X.row(u);
     return Eigen::RowVector3d(mean / static_cast<double>(ring[v].size()) - X.row(v));
   };
-  // Only a noisy region is smoothed; a clean one is mapped as it is, exactly (mesh/scan_noise.h;
-  // on every third region of the corpus it estimates the noise to within 5%). The threshold, 0.02
-  // of the mean edge, lies between the corpus's clean and noisy regions: measured with the
-  // median this estimate divides by 0.917, at most 0.001 on the clean ones and 0.028 or more on
-  // the noisy ones.
-  {
-    const ScanNoise noise = estimateScanNoise(region);
-    if (!(noise.meanEdge > 0) || noise.sigma < 0.02 * noise.meanEdge) return out;
-  }
   for (int r = 0; r < 2 * rounds; ++r) {
     const Eigen::MatrixX3d normal = vertexNormals(work);
     const double step = r % 2 == 0 ? 0.5 : -0.53;
@@ -346,9 +342,11 @@ std::vector<Eigen::Vector3d> sidePointsWithArcs(const Eigen::MatrixX3d& x, const
 LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
                                             const LabeledParameterizationOptions& o) {
   validateMesh(region, "region");
-  const TriangleMesh smooth = denoised(region, o.denoise);
+  const ScanNoise noise = estimateScanNoise(region);
+  const TriangleMesh smooth = denoised(region, o.denoise, noise);
   LabeledParameterization p = parameterizeOriented(smooth, segments, o, true);
   p.mapped = smooth.vertices;
+  p.noise = noise;
   return p;
 }
 

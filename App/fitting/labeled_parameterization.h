@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "fitting/guiding_frame.h"
+#include "mesh/scan_noise.h"
 #include "mesh/triangle_mesh.h"
 
 namespace holefill {
@@ -57,6 +58,7 @@ struct LabeledParameterization {
   double width = 0, height = 0;    // the rectangle, after the optimised scale
   std::vector<int> perimeter;      // the outer boundary loop, anticlockwise in uv
   Eigen::MatrixX3d mapped;         // the positions mapped: the region's, smoothed along the normal where it is noisy (denoise)
+  ScanNoise noise;                 // the region's scan noise (mesh/scan_noise.h), which decides that
   GuidingFrame frame;
   int flippedTriangles = 0;        // in the returned map (0 unless even the start had some)
   double arapEnergy = 0;           // Σ cot-weighted |edge − rotated edge|², relative to Σ cot-weighted |edge|²

@@ -270,10 +270,12 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   };
   // Smooth pcurves first; where they cross (a noisy loop's interpolants overshoot between close
   // stretches) the loop's own segments, which are simple when the loop is (the correction keeps it so).
+  std::vector<std::vector<Eigen::Vector2d>> loops{loopUV(holes.holes[outer], true)};
+  for (size_t k = 0; k < holes.holes.size(); ++k)
+    if (k != outer) loops.push_back(loopUV(holes.holes[k], false));
   for (bool polyline : {false, true}) {
-    BRepBuilderAPI_MakeFace mf(g, loopWire(g, loopUV(holes.holes[outer], true), polyline));
-    for (size_t k = 0; k < holes.holes.size(); ++k)
-      if (k != outer) mf.Add(loopWire(g, loopUV(holes.holes[k], false), polyline));
+    BRepBuilderAPI_MakeFace mf(g, loopWire(g, loops[0], polyline));
+    for (size_t k = 1; k < loops.size(); ++k) mf.Add(loopWire(g, loops[k], polyline));
     if (!mf.IsDone()) throw Error("could not trim the fitted surface by the region's boundary");
     ShapeFix_Face fix(mf.Face());
     fix.Perform();

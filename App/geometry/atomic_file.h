@@ -23,8 +23,8 @@ std::string temporaryFileFor(const std::string& path);
 bool commitTemporaryFile(const std::string& tmp, const std::string& path);
 
 // The files one command writes (a model, its face, a sidecar), all or none: each is written,
-// by any writer, to the staged name stage(path) returns (next to its target, with its
-// extension), and commit() renames them into place once all are written. A set left
+// by any writer, to a staged name next to its target (with its extension), and commit()
+// renames them into place once all are written. A set left
 // uncommitted (the command failed half-way: a bad folder for the second file) removes what it
 // staged, and the targets keep what they held.
 class OutputSet {
@@ -33,13 +33,13 @@ public:
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
   ~OutputSet();
-  std::string stage(const std::string& path);
   // Stages path and has `writer` write the staged name; an error it throws names path instead.
   void write(const std::string& path, const std::function<void(const std::string&)>& writer);
   // Throws holefill::Error naming the target whose rename failed (the rest are removed).
   void commit();
 
 private:
+  std::string stage(const std::string& path);
   std::vector<std::pair<std::string, std::string>> staged_;  // (staged name, target)
 };
 

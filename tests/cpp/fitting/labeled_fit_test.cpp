@@ -131,6 +131,25 @@ bool warns(const LabeledFitResult& r, const std::string& what) {
 
 Eigen::Vector3d halfCylinder(double x, double y) { return {3 * std::cos(M_PI * x), 3 * std::sin(M_PI * x), 10 * y}; }
 
+// The bitten half cylinder several tests share: 40 × 40 cells of 0.025, the corner within 0.55
+// of (1, 1) cut away, labeled by the corpus's bounding-box rule.
+TriangleMesh bittenHalfCylinder(std::vector<LabeledSegment>& labels) {
+  Eigen::MatrixX2d truth;
+  const TriangleMesh region =
+      testregions::gridRegion(40, 40, 0.025, [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }, halfCylinder, truth);
+  labels = testregions::boundingBoxLabels(region, truth);
+  return region;
+}
+
+// Scan noise: a normal deviate of `fraction` of the region's diagonal on every coordinate.
+void addNoise(TriangleMesh& region, double fraction, unsigned seed) {
+  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0, fraction * diagonal);
+  for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
+    for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
+}
+
 }  // namespace
 
 // The corpus's failure classes (issue 21): labels by the bounding-box rule run round a notch, a
@@ -171,15 +190,9 @@ TEST(LabeledFit, ConcaveLShapeUSlotBittenCornerAndCrescentAreLeftFreeAndFit) {
 // off (the fit then missed the data by 0.31 of the diagonal). The extension is tried at G1 then,
 // or left out, and the fit never misses the data by more than twice the fit without extension.
 TEST(LabeledFit, AnExtensionThatPullsTheFitOffNoisyDataIsLoweredOrLeftOut) {
-  Eigen::MatrixX2d truth;
-  TriangleMesh region = testregions::gridRegion(40, 40, 0.025, [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }, halfCylinder,
-                                                truth);
-  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
-  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
-  std::mt19937 rng(7);
-  std::normal_distribution<double> noise(0, 0.002 * diagonal);
-  for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
-    for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
+  std::vector<LabeledSegment> labels;
+  TriangleMesh region = bittenHalfCylinder(labels);
+  addNoise(region, 0.002, 7);
   // The paper's continuation carries the noise out (a Cauchy problem), and the guard catches it.
   LabeledFitOptions o;
   o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation;
@@ -263,18 +276,12 @@ TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
 // principle): the region's noise is estimated from the mesh alone, and a fit whose data rms is
 // within 1.5 times it is kept. The same region clean is refined further, while its max falls.
 TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
-  Eigen::MatrixX2d truth;
-  TriangleMesh region = testregions::gridRegion(40, 40, 0.025, [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }, halfCylinder,
-                                                truth);
-  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  std::vector<LabeledSegment> labels;
+  TriangleMesh region = bittenHalfCylinder(labels);
   LabeledFitOptions o;
   o.fit.controlU = o.fit.controlV = 5;
   const LabeledFitResult clean = fitLabeled(region, labels, o);
-  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
-  std::mt19937 rng(11);
-  std::normal_distribution<double> noise(0, 0.002 * diagonal);
-  for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
-    for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
+  addNoise(region, 0.002, 11);
   const LabeledFitResult noisy = fitLabeled(region, labels, o);
   std::printf("bitten half cylinder from 5x5: clean %dx%d (noise %.1e), 0.2%% noise %dx%d (noise estimated %.2e), data rms %.2e\n",
               clean.fit.surface.numU(), clean.fit.surface.numV(), clean.noise, noisy.fit.surface.numU(), noisy.fit.surface.numV(), noisy.noise,
@@ -295,10 +302,8 @@ TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
 // leave 4.6e-3 on the clean bitten half cylinder, above the tolerance 1e-3 and any noise; refined,
 // the verdict follows the data max.
 TEST(LabeledFit, AFitThatMissesTheDataSaysSo) {
-  Eigen::MatrixX2d truth;
-  TriangleMesh region = testregions::gridRegion(40, 40, 0.025, [](double x, double y) { return std::hypot(x - 1, y - 1) > 0.55; }, halfCylinder,
-                                                truth);
-  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  std::vector<LabeledSegment> labels;
+  const TriangleMesh region = bittenHalfCylinder(labels);
   LabeledFitOptions o;
   o.fit.controlU = o.fit.controlV = 5;
   o.maxControl = 0;
