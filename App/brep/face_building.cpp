@@ -176,9 +176,11 @@ bool raysLeaveOutward(const TopoDS_Shell& shell, const std::vector<TopoDS_Face>&
     return false;
   };
   std::vector<TopoDS_Face> from = neighbours;
-  for (const auto& [f, box] : boxes)
+  for (const auto& entry : boxes) {  // not a structured binding: C++17 lambdas cannot capture one (clang)
+    const TopoDS_Face& f = entry.first;
     if (!f.IsSame(added) && std::none_of(neighbours.begin(), neighbours.end(), [&](const TopoDS_Face& g) { return g.IsSame(f); }))
       from.push_back(f);
+  }
   int escaped = 0, rays = 0;
   for (const TopoDS_Face& face : from) {
     if (++rays > kMaxRays) return false;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <signal.h>
 #include <sstream>
@@ -115,6 +116,37 @@ TopoDS_Shape readCheckedInProcess(const std::string& path, const std::string& ex
   return shape;
 }
 
+// Runs read in a throwaway child first (outside a supervised child): a hang or crash there costs
+// only the child, and the caller then reads in its own process knowing the reader returns. A read
+// that failed with an error in the child is left to the caller's read, which says why.
+void trialReadInChild(const std::function<void()>& read, double timeLimit, const std::string& what, const std::string& name) {
+  fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    int code = 1;
+    try {
+      read();
+      code = 0;
+    } catch (...) {
+    }
+    _exit(code);
+  }
+  if (pid < 0) return;  // no child to spare: read as before
+  int status = 0;
+  const int steps = static_cast<int>(timeLimit * 100);
+  bool done = false;
+  for (int i = 0; i < steps && !done; ++i) {
+    if (waitpid(pid, &status, WNOHANG) == pid) done = true;
+    else usleep(10000);
+  }
+  if (!done) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    throw Error(what + " took longer than " + std::to_string(int(timeLimit)) + " s: the data is corrupt or truncated");
+  }
+  if (WIFSIGNALED(status)) throw Error(name + " is corrupt: the reader crashed on it");
+}
+
 }  // namespace
 
 void validateShape(const TopoDS_Shape& shape) {
@@ -159,33 +191,7 @@ TopoDS_Shape readShape(const std::string& path, double timeLimit) {
     SupervisedStep step("reading '" + path + "'", timeLimit, true);
     return readCheckedInProcess(path, ext);
   }
-  // Trial read in a child: a hang or crash there costs only the child.
-  fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    int code = 1;
-    try {
-      readCheckedInProcess(path, ext);
-      code = 0;
-    } catch (...) {
-    }
-    _exit(code);
-  }
-  if (pid > 0) {
-    int status = 0;
-    const int steps = static_cast<int>(timeLimit * 100);
-    bool done = false;
-    for (int i = 0; i < steps && !done; ++i) {
-      if (waitpid(pid, &status, WNOHANG) == pid) done = true;
-      else usleep(10000);
-    }
-    if (!done) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      throw Error("reading '" + path + "' took longer than " + std::to_string(int(timeLimit)) + " s: the file is corrupt or truncated");
-    }
-    if (WIFSIGNALED(status)) throw Error("'" + path + "' is corrupt: the reader crashed on it");
-  }
+  trialReadInChild([&] { readCheckedInProcess(path, ext); }, timeLimit, "reading '" + path + "'", "'" + path + "'");
   return readCheckedInProcess(path, ext);
 }
 
@@ -215,20 +221,31 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
     throw Error("cannot write '" + path + "': check the folder exists and is writable");
 }
 
-TopoDS_Shape shapeFromBrepString(const std::string& brep) {
+TopoDS_Shape shapeFromBrepString(const std::string& brep, double timeLimit) {
   if (brep.empty()) throw Error("empty BREP text: the shape is empty");
   checkBrepText(brep, "the BREP text");
-  std::istringstream in(brep);
-  TopoDS_Shape s;
-  BRep_Builder b;
-  try {
-    BRepTools::Read(s, in, b);
-  } catch (const Standard_Failure& e) {
-    throw Error(std::string("invalid BREP text: ") + e.GetMessageString());
+  const auto read = [&] {
+    std::istringstream in(brep);
+    TopoDS_Shape s;
+    BRep_Builder b;
+    try {
+      BRepTools::Read(s, in, b);
+    } catch (const Standard_Failure& e) {
+      throw Error(std::string("invalid BREP text: ") + e.GetMessageString());
+    }
+    if (s.IsNull()) throw Error("invalid BREP text: no shape in it");
+    validateShape(s);
+    return s;
+  };
+  // OCCT's reader loops for ever on grammar errors checkBrepText cannot see (a token it fails to
+  // read inside an edge's list of representations, found by fuzzing): the Python door must not
+  // hang FreeCAD, so the text is read in a throwaway child first, as files are.
+  if (supervised()) {
+    SupervisedStep step("reading the BREP text", timeLimit, true);
+    return read();
   }
-  if (s.IsNull()) throw Error("invalid BREP text: no shape in it");
-  validateShape(s);
-  return s;
+  trialReadInChild([&] { read(); }, timeLimit, "reading the BREP text", "the BREP text");
+  return read();
 }
 
 std::string shapeToBrepString(const TopoDS_Shape& shape) {

@@ -17,7 +17,8 @@ namespace holefill {
 TopoDS_Shape readShape(const std::string& path, double timeLimitSeconds = 60.0);
 void writeShape(const TopoDS_Shape& shape, const std::string& path);  // by extension, atomically
 
-TopoDS_Shape shapeFromBrepString(const std::string& brep);
+// BREP text (the Python door's form of a shape): read like a file, under the same time limit.
+TopoDS_Shape shapeFromBrepString(const std::string& brep, double timeLimitSeconds = 60.0);
 std::string shapeToBrepString(const TopoDS_Shape& shape);
 
 // Throws when a vertex, pole or curve/surface sample is NaN, infinite or beyond tol::kMaxCoordinate.

@@ -241,8 +241,9 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     // at other vertices off its rim, none elsewhere.
     std::vector<char> hasRow(N, 0), gridRow(N, 0);
     std::vector<Eigen::Triplet<double>> Dt;
-    for (const auto& [ij, k] : freshAt) {
-      const int v = nv + k;
+    for (const auto& node : freshAt) {  // not a structured binding: C++17 lambdas cannot capture one (clang)
+      const auto& ij = node.first;
+      const int v = nv + node.second;
       const auto at = [&](int di, int dj) {
         const auto it = freshAt.find({ij.first + di, ij.second + dj});
         return it == freshAt.end() ? -1 : nv + it->second;

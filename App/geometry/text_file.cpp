@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
 
@@ -44,8 +45,10 @@ bool parseDouble(const std::string& tok, double& v) {
 bool parseInt(const std::string& tok, long long& v) {
   if (tok.empty()) return false;
   char* end = nullptr;
+  errno = 0;
   v = std::strtoll(tok.c_str(), &end, 10);
-  return end == tok.c_str() + tok.size();
+  // Out of range is no number either: strtoll would clamp "4888…8" to 2^63 − 1 (found by fuzzing).
+  return end == tok.c_str() + tok.size() && errno != ERANGE;
 }
 
 }  // namespace holefill

@@ -88,8 +88,8 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
     } else if (!wanted[h]) {
       skip("not filled: not asked for");
     } else if (options.maxBoundary > 0 && fill.boundaryVertices > options.maxBoundary) {
-      skip("not filled: " + std::to_string(fill.boundaryVertices) + " boundary vertices exceed --max-boundary " +
-           std::to_string(options.maxBoundary));
+      skip("not filled: " + std::to_string(fill.boundaryVertices) + " boundary vertices exceed the limit of " +
+           std::to_string(options.maxBoundary) + " (maxBoundary, --max-boundary; 0 lifts it)");
     } else {
       try {
         const std::vector<int>& loop = hole.loop;

@@ -124,7 +124,8 @@ TriangleMesh parseOff(const std::string& bytes, Builder& b) {
       nf < 0)
     b.fail(tk.where(), "the header needs vertex, face and edge counts");
   // Each vertex needs at least 6 bytes of text ("0 0 0\n"), each face 8: counts beyond that are lies.
-  if (nv * 6 > static_cast<long long>(bytes.size()) || nf * 8 > static_cast<long long>(bytes.size()))
+  // Divided, not multiplied: a count near 2^63 would overflow (found by fuzzing, tests/fuzz).
+  if (nv > static_cast<long long>(bytes.size()) / 6 || nf > static_cast<long long>(bytes.size()) / 8)
     b.fail(tk.where(), "the counts (" + std::to_string(nv) + " vertices, " + std::to_string(nf) +
                            " faces) do not fit in the file: it is truncated or corrupt");
   b.points.reserve(nv);
@@ -247,9 +248,17 @@ TriangleMesh parsePly(const std::string& bytes, Builder& b) {
         if (!p.countType.empty()) {
           const double k = value(p.countType);
           if (!(k >= 0 && k <= 100000)) b.fail(e.name + " " + std::to_string(i), "bad list length");
-          std::vector<long long> list(static_cast<size_t>(k));
-          for (auto& x : list) x = static_cast<long long>(value(p.type));
-          if (isFace && (p.name == "vertex_indices" || p.name == "vertex_index")) poly = list;
+          const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
+          std::vector<long long> list;
+          for (size_t j = 0; j < static_cast<size_t>(k); ++j) {
+            const double x = value(p.type);
+            if (!indices) continue;  // other lists (texture coordinates, ...) are read past
+            // A float list or a huge value is no vertex index; converting it would be undefined (fuzzing).
+            if (!(std::abs(x) < 9e18) || x != std::floor(x))
+              b.fail(e.name + " " + std::to_string(i), "a vertex index that is not an integer");
+            list.push_back(static_cast<long long>(x));
+          }
+          if (indices) poly = list;
         } else {
           const double v = value(p.type);
           if (isVertex && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z') xyz[p.name[0] - 'x'] = v;

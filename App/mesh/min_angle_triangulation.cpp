@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <tuple>
 
 #include "geometry/error.h"
 #include "mesh/triangle_mesh.h"
@@ -23,10 +24,19 @@ MinAngleResult triangulateMinAngle(const std::vector<Eigen::Vector3d>& loop,
     const double len = normalSums[i].norm();
     normal[i] = len > 0 ? Eigen::Vector3d(normalSums[i] / len) : Eigen::Vector3d::Zero();
   }
-  double spread = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j)
-      if (normal[i].squaredNorm() > 0 && normal[j].squaredNorm() > 0) spread = std::max(spread, angleBetween(normal[i], normal[j]));
+  // The largest angle between two boundary normals: the pair of least dot product, then its angle
+  // measured as everywhere else (a quadratic scan of dot products, not of angles: 20,000 boundary
+  // vertices cost 0.2 s instead of 6 s).
+  double spread = 0, leastDot = std::numeric_limits<double>::infinity();
+  int pi = -1, pj = -1;
+  for (int i = 0; i < n; ++i) {
+    if (normal[i].squaredNorm() == 0) continue;
+    for (int j = i + 1; j < n; ++j) {
+      const double d = normal[i].dot(normal[j]);
+      if (normal[j].squaredNorm() > 0 && d < leastDot) { leastDot = d; pi = i; pj = j; }
+    }
+  }
+  if (pi >= 0) spread = angleBetween(normal[pi], normal[pj]);
   result.sigma = spread < options.lowNormalSpread ? options.smallSigma : options.sigmaShare * spread;
 
   // The live loop as a doubly linked list; across[i] is the unit normal of the triangle on
@@ -51,35 +61,50 @@ MinAngleResult triangulateMinAngle(const std::vector<Eigen::Vector3d>& loop,
     // The new triangle (next, i, prev) runs against the loop.
     return Eigen::Vector3d((loop[i] - loop[next[i]]).cross(loop[prev[i]] - loop[next[i]]));
   };
+  // An ear's pass: 0 when it passes every test, 1 without σ, 2 without σ and the fold test, 3 when
+  // its new edge exists. The ear cut is the one of least (pass, angle), which is the paper's rule
+  // with the relaxations of the header. A cut changes the tests of the four ears around it only, so
+  // the ears are kept ordered and those four re-keyed: linear-logarithmic in the hole's size
+  // instead of a quadratic rescan (a 5,000-vertex hole took 6 s).
+  const double cosFold = std::cos(options.maxFoldAngle);
+  auto pass = [&](int i) {
+    if (joined(prev[i], next[i])) return 3;
+    const Eigen::Vector3d ne = earNormal(i);
+    const double len = ne.norm();
+    const bool folds = !(len > 0) || ne.dot(across[prev[i]]) < cosFold * len || ne.dot(across[i]) < cosFold * len;
+    if (folds) return 2;
+    const Eigen::Vector3d &na = sums[prev[i]], &nb = sums[next[i]];
+    return na.squaredNorm() > 0 && nb.squaredNorm() > 0 && angleBetween(na, nb) > result.sigma ? 1 : 0;
+  };
+  using Key = std::tuple<int, double, int>;  // pass, angle, vertex
+  std::set<Key> ears;
+  std::vector<Key> keyOf(n);
+  auto rekey = [&](int i) {
+    ears.erase(keyOf[i]);
+    const double angle = earAngle(i);  // NaN (coincident points) would break the set's order
+    keyOf[i] = Key(pass(i), std::isnan(angle) ? std::numeric_limits<double>::infinity() : angle, i);
+    ears.insert(keyOf[i]);
+  };
+  for (int i = 0; i < n; ++i) rekey(i);
 
-  int alive = n, start = 0;
+  int alive = n, last = 0;
   while (alive > 3) {
-    int best = -1;
-    for (int pass = 0; pass < 3 && best < 0; ++pass) {
-      double bestAngle = std::numeric_limits<double>::infinity();
-      int i = start;
-      for (int k = 0; k < alive; ++k, i = next[i]) {
-        if (joined(prev[i], next[i])) continue;
-        if (pass == 0) {
-          const Eigen::Vector3d &na = sums[prev[i]], &nb = sums[next[i]];
-          if (na.squaredNorm() > 0 && nb.squaredNorm() > 0 && angleBetween(na, nb) > result.sigma) continue;
-        }
-        if (pass <= 1) {
-          const Eigen::Vector3d ne = earNormal(i);
-          const double len = ne.norm();
-          if (!(len > 0)) continue;
-          const double cosFold = std::cos(options.maxFoldAngle);
-          if (ne.dot(across[prev[i]]) < cosFold * len || ne.dot(across[i]) < cosFold * len) continue;
-        }
-        const double a = earAngle(i);
-        if (a < bestAngle) { bestAngle = a; best = i; }
-      }
-      if (best >= 0 && pass == 1) ++result.earsWithoutSigma;
-      if (best >= 0 && pass == 2) ++result.earsWithFold;
+    const auto least = ears.begin();
+    const int p = std::get<0>(*least);
+    int best = std::get<2>(*least);
+    const auto tied = [&](const Key& k) { return std::get<0>(k) == p && std::get<1>(k) == std::get<1>(*least); };
+    if (std::next(least) != ears.end() && tied(*std::next(least))) {
+      // Equal angles (a hole in a regular grid has many): the first tied ear met walking the loop
+      // from the last cut, so the cuts advance as one front, as the paper's scan does.
+      int i = last;
+      for (int k = 0; k < alive; ++k, i = next[i])
+        if (tied(keyOf[i])) { best = i; break; }
     }
-    if (best < 0)
+    if (p == 3)
       throw Error("the hole cannot be triangulated without duplicating an existing edge (" + std::to_string(alive) +
                   " boundary vertices left); the mesh around it is folded onto itself");
+    if (p == 1) ++result.earsWithoutSigma;
+    if (p == 2) ++result.earsWithFold;
     const int a = prev[best], b = next[best];
     result.triangles.push_back({b, best, a});
     const Eigen::Vector3d ne = earNormal(best);
@@ -88,9 +113,12 @@ MinAngleResult triangulateMinAngle(const std::vector<Eigen::Vector3d>& loop,
     across[a] = ne.normalized();
     next[a] = b;
     prev[b] = a;
-    start = a;
+    ears.erase(keyOf[best]);
+    for (int v : {prev[a], a, b, next[b]}) rekey(v);
+    last = a;
     --alive;
   }
+  const int start = last;
   const int a = prev[start], c = next[start];
   result.triangles.push_back({c, start, a});
   return result;

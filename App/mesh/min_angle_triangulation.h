@@ -6,7 +6,9 @@
 // largest difference). Cutting ears at similar normals first keeps a crease that crosses the
 // hole as a crease of the patch. Beyond the paper, an ear is never cut when its new edge
 // already exists (in the mesh or the patch) or when its triangle would fold back onto a
-// neighbour; if no ear passes, σ is dropped first and the fold test second.
+// neighbour; if no ear passes, σ is dropped first and the fold test second. Ears are kept
+// ordered by (relaxation needed, angle) and re-keyed around each cut, so a hole of n vertices
+// costs O(n log n) cuts plus one O(n²) scan of dot products for σ.
 #pragma once
 
 #include <cmath>

@@ -375,7 +375,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
       }
       return py::make_tuple(r.mesh.vertices, r.mesh.triangles, r.toJson());
     });
-  }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("maxBoundary") = 0,
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("maxBoundary") = MeshFillOptions{}.maxBoundary,
      py::arg("refine") = true, py::arg("fairIterations") = -1, py::arg("smoothIterations") = -1, py::arg("densityFactor") = 0.0,
      py::arg("closenessScale") = 0.0, py::arg("featureScale") = 0.0, py::arg("progress") = nullptr,
      py::arg("shapeOrder") = -1, py::arg("shapePasses") = 0, py::arg("alongNormals") = true, py::arg("triangulation") = "angle",
@@ -567,4 +567,5 @@ PYBIND11_MODULE(HoleFillApp, m) {
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
         py::arg("name"), "OBJ text of a bundled sample cage.");
   m.attr("__version__") = "0.1.0";
+  m.attr("defaultMaxBoundary") = MeshFillOptions{}.maxBoundary;  // the doors' default, kept in the core
 }

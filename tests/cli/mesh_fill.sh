@@ -52,6 +52,25 @@ expect_error "hole out of range" 1 mesh-fill "$T/open_box.obj" --out "$T/o.obj" 
 expect_error "closed mesh: no hole 0" 1 mesh-fill "$T/closed.obj" --out "$T/o.obj" --holes 0
 expect_error "closed mesh: nothing to fill" 1 mesh-fill "$T/closed.obj" --out "$T/o.obj"
 expect_error "hole too long for --max-boundary" 2 mesh-fill "$T/open_box.obj" --out "$T/o.obj" --max-boundary 3
+# A band around a 5,001-vertex hole (issue 22: such holes took minutes): past the default limit
+# both of its loops stay open, so nothing is filled or written, and the message names the limit.
+"$PYTHON" - "$T/long_hole.obj" <<'PY'
+import math, sys
+n = 5001
+with open(sys.argv[1], "w") as f:
+    for r in (1.0, 1.1):
+        for k in range(n):
+            f.write("v %.9g %.9g 0\n" % (r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n)))
+    for k in range(n):
+        a, b = k + 1, (k + 1) % n + 1
+        f.write("f %d %d %d\nf %d %d %d\n" % (a, b, a + n, b, b + n, a + n))
+PY
+expect_error "hole past the default --max-boundary" 2 mesh-fill "$T/long_hole.obj" --out "$T/o.obj"
+if grep -q "exceed the limit of 5000" "$T/out"; then
+  pass=$((pass+1)); echo "ok   the limit is named"
+else
+  fail=$((fail+1)); echo "FAIL the limit is not named: $(cat "$T/out")"
+fi
 expect_error "bad triangulation" 1 mesh-fill "$T/open_box.obj" --out "$T/o.obj" --triangulation ears
 expect_error "unwritable output" 1 mesh-fill "$T/open_box.obj" --out "$T/no/such/dir/o.obj"
 # A good fill: exit 0, closed, the input's 8 vertices and 10 faces first and unchanged.

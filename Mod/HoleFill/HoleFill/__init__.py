@@ -238,7 +238,7 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402
-from HoleFill.meshfill import MeshHole, fillMeshHoles, makeMeshFill, meshHoles, readMesh, writeMesh  # noqa: E402
+from HoleFill.meshfill import MeshHole, defaultMaxBoundary, fillMeshHoles, makeMeshFill, meshHoles, readMesh, writeMesh  # noqa: E402
 from HoleFill.labeled import fitLabeled, boundaryLoop, cornerSplits, makeBoundaryLabels, makeLabeledFit  # noqa: E402
 from HoleFill.pointcloud import fitPoints, makePointCloudFit, parameterize  # noqa: E402
 from HoleFill.gnurbs import (cageFromShape, cageShell, extraordinaryPoints, gnurbsSurface, importCage, makeGnurbs,  # noqa: E402

@@ -64,14 +64,19 @@ def meshHoles(mesh):
     return out
 
 
-def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-1, smoothIterations=-1,
+def defaultMaxBoundary():
+    """Holes with more boundary vertices stay open unless maxBoundary says otherwise (the core's default)."""
+    return HoleFillApp.defaultMaxBoundary
+
+
+def fillMeshHoles(mesh, holes=None, maxBoundary=None, refine=True, fairIterations=-1, smoothIterations=-1,
                   densityFactor=0.0, closenessScale=0.0, featureScale=0.0, progress=None, shapeOrder=-1,
                   triangulation="angle"):
     """Fill holes of `mesh`; returns (new Mesh.Mesh, report dict).
 
     holes: hole numbers (0-based, as meshHoles numbers them) or MeshHole dicts; None fills every
-    fillable hole. maxBoundary > 0 leaves holes with more boundary vertices open (e.g. the border
-    of an open scan). refine=False keeps the bare minimum-angle triangulation. fairIterations,
+    fillable hole. Holes with more boundary vertices than maxBoundary stay open (e.g. the border
+    of an open scan); None: defaultMaxBoundary() (5000), 0: no limit. refine=False keeps the bare minimum-angle triangulation. fairIterations,
     smoothIterations, densityFactor (α), closenessScale and featureScale (σ_c, σ_s per local
     density) override the defaults when given (≥ 0, > 0). progress(fraction) -> False cancels.
     shapeOrder: 0 flat (the paper's placement), 1 membrane, 2 thin plate (default), 3 minimum
@@ -84,6 +89,8 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-
     indices = [int(h["index"]) if isinstance(h, dict) else int(h) for h in (holes or [])]
     if holes is not None and not indices:
         raise HoleFillApp.HoleFillError("no hole selected: pass hole numbers, or holes=None for all")
+    if maxBoundary is None:
+        maxBoundary = defaultMaxBoundary()
     nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, int(maxBoundary), bool(refine), int(fairIterations),
                                                int(smoothIterations), float(densityFactor), float(closenessScale),
                                                float(featureScale), progress, shapeOrder=int(shapeOrder),
@@ -91,7 +98,7 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=0, refine=True, fairIterations=-
     return _mesh(nv, nt), json.loads(report)
 
 
-def makeMeshFill(source, holes=None, maxBoundary=0, name=None, **options):
+def makeMeshFill(source, holes=None, maxBoundary=None, name=None, **options):
     """Fill `source` (a Mesh feature) into a new Mesh::Feature of the same document, in one undo
     transaction; the source is left as it is. Returns the new feature; the fill's report is in
     its read-only property HoleFillReport (JSON text)."""

@@ -79,6 +79,27 @@ TEST(MeshIo, CorruptFilesGiveClearErrors) {
             std::string::npos);
 }
 
+// Found by fuzzing (tests/fuzz, UBSan): an OFF count near 2^63 overflowed the size check, and a
+// PLY face list of floats (3.6e37) was converted to an integer index, both undefined behaviour.
+TEST(MeshIo, FuzzedCountsAndIndicesAreRefused) {
+  const auto refused = [](const std::string& bytes, const std::string& ext, const std::string& why) {
+    try {
+      parseMesh(bytes, ext);
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+      return;
+    }
+    ADD_FAILURE() << "accepted: " << bytes;
+  };
+  refused("OFF\n9223372036854775807 1 0\n0 0 0\n", "off", "do not fit");
+  refused("OFF\n3 9223372036854775807 0\n0 0 0\n", "off", "do not fit");
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar float vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  refused(head + "3 0 1 3.55556e+37\n", "ply", "not an integer");
+  refused(head + "3 0 1 1.5\n", "ply", "not an integer");
+  EXPECT_EQ(parseMesh(head + "3 0 1 2\n", "ply").triangles.rows(), 1);  // float-typed but whole: still an index
+}
+
 TEST(MeshIo, WritesAtomically) {
   const TriangleMesh m = samples::icosphere(1);
   EXPECT_THROW(writeMesh(m, "/nonexistent-folder/out.obj"), Error);
