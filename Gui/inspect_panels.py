@@ -56,8 +56,7 @@ class _Panel:
     def mesh(self, obj, faces, angle):
         key = (obj.Name, tuple(faces or ()), angle, obj.Shape.hashCode())
         if key not in self.meshes:
-            import HoleFill
-            self.meshes[key] = HoleFill.inspectionMesh(obj.Shape, faces, angle)
+            self.meshes[key] = overlay.bounded_mesh(obj, faces, angle, "%s of" % self.kind)
         return self.meshes[key]
 
 

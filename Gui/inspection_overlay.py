@@ -54,6 +54,46 @@ def _view():
     return gdoc.ActiveView
 
 
+# An overlay is interactive work: its tessellation stops before about two vertices per pixel of
+# the view (more shows nothing more) or INTERACTIVE_SECONDS by its measured rate, shows its
+# progress after half a second and can be cancelled (issue 22: zebra on a fill gone wrong once
+# built 3 million vertices in 73 s with no way out).
+INTERACTIVE_SECONDS = 10.0
+
+
+def view_vertex_budget():
+    """Two vertices per pixel of the active 3D view (a full-HD view: about 4 million), at least 200,000."""
+    try:
+        w, h = _view().getSize()
+    except Exception:
+        w, h = 1920, 1080
+    return max(200000, 2 * int(w) * int(h))
+
+
+def bounded_mesh(obj, faces, maxNormalAngle=2.0, what="Tessellating"):
+    """HoleFill.inspectionMesh bounded by the view and INTERACTIVE_SECONDS, with a cancellable
+    progress dialog; cancelling raises HoleFillError. A mesh that stopped at a bound carries
+    stoppedByBudget and its warnings, which go to the report view."""
+    from PySide2 import QtCore, QtWidgets
+    dlg = QtWidgets.QProgressDialog("%s %s..." % (what, obj.Label), "Cancel", 0, 100, FreeCADGui.getMainWindow())
+    dlg.setWindowModality(QtCore.Qt.WindowModal)
+    dlg.setMinimumDuration(500)
+
+    def progress(f):
+        dlg.setValue(int(100 * f))
+        QtWidgets.QApplication.processEvents()
+        return not dlg.wasCanceled()
+
+    try:
+        mesh = HoleFill.inspectionMesh(obj.Shape, faces, maxNormalAngle, maxVertices=view_vertex_budget(),
+                                       timeLimit=INTERACTIVE_SECONDS, progress=progress)
+    finally:
+        dlg.close()
+    for w in mesh["warnings"]:
+        FreeCAD.Console.PrintWarning("HoleFill: %s: %s\n" % (obj.Label, w))
+    return mesh
+
+
 def _name(kind, obj):
     return "%s_%s_%s" % (PREFIX, kind, obj.Name)
 
@@ -127,6 +167,7 @@ def _add(kind, obj, node):
 def show_curvature(obj, faces, quantity="mean", percentiles=(2.0, 98.0), valueRange=None, maxNormalAngle=2.0,
                    mesh=None):
     """Curvature-coloured overlay of `obj` (its `faces`, or all); returns the curvatureMap dict."""
+    mesh = mesh or bounded_mesh(obj, faces, maxNormalAngle, "Curvature of")
     cmap = HoleFill.curvatureMap(obj.Shape, quantity=quantity, faces=faces, percentiles=percentiles,
                                  valueRange=valueRange, maxNormalAngle=maxNormalAngle, mesh=mesh)
     mat = coin.SoMaterial()
@@ -207,7 +248,7 @@ def zebra_shader(count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection
 def show_zebra(obj, faces, count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection=(0.0, 0.0, 1.0),
                maxNormalAngle=2.0, mesh=None):
     """Zebra overlay (reflection lines, or isophotes when isophote=True); returns the mesh dict."""
-    mesh = mesh or HoleFill.inspectionMesh(obj.Shape, faces, maxNormalAngle)
+    mesh = mesh or bounded_mesh(obj, faces, maxNormalAngle, "Zebra stripes of")
     _add("Zebra", obj, _surface_nodes(mesh, [zebra_shader(count, width, angleDeg, isophote, isoDirection)]))
     _WATCH.remember("Zebra", obj, dict(faces=faces, count=count, width=width, angleDeg=angleDeg, isophote=isophote,
                                        isoDirection=isoDirection, maxNormalAngle=maxNormalAngle))

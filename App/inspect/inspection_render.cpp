@@ -284,7 +284,11 @@ RenderResult renderInspection(const InspectionMesh& m, const RenderOptions& o) {
 }
 
 RenderResult renderInspection(const TopoDS_Shape& shape, const RenderOptions& o) {
-  const TessellationResult t = tessellateForInspection(shape, o.tessellation);
+  // The image bounds the tessellation: past about two vertices per pixel the picture shows
+  // nothing more, and a surface gone wrong would otherwise be refined for a minute.
+  TessellationOptions to = o.tessellation;
+  to.maxVertices = std::min(to.maxVertices, std::max<Eigen::Index>(100000, 2 * static_cast<Eigen::Index>(o.width) * o.height));
+  const TessellationResult t = tessellateForInspection(shape, to);
   RenderResult r = renderInspection(t.mesh, o);
   r.maxInteriorNormalAngle = t.maxInteriorNormalAngle;
   r.maxBoundaryNormalAngle = t.maxBoundaryNormalAngle;

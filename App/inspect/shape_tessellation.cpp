@@ -17,7 +17,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <iomanip>
 #include <map>
+#include <sstream>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -160,9 +162,24 @@ bool loadFace(FaceMesh& m, const TopTools_IndexedMapOfShape& edges, int threads)
 
 // Splits, pass after pass, every mesh edge whose exact end normals differ by more than the
 // bound: interior edges per face, boundary pieces jointly in all faces that hold them.
-int refine(std::vector<FaceMesh>& parts, const TessellationOptions& o, std::vector<std::string>& warnings) {
+std::string shortNumber(double x) {
+  std::ostringstream s;
+  s << std::setprecision(3) << x;
+  return s.str();
+}
+
+int refine(std::vector<FaceMesh>& parts, const TessellationOptions& o, std::chrono::steady_clock::time_point start,
+           TessellationResult& r) {
   Eigen::Index vertices = 0;
   for (const auto& m : parts) vertices += static_cast<Eigen::Index>(m.uv.size());
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const auto report = [&] {
+    if (!o.progress) return;
+    double used = static_cast<double>(vertices) / static_cast<double>(std::max<Eigen::Index>(o.maxVertices, 1));
+    if (o.timeLimit > 0) used = std::max(used, elapsed() / o.timeLimit);
+    if (!o.progress(std::min(used, 1.0))) throw Error("the tessellation was cancelled");
+  };
+  report();
   int pass = 0;
   for (; pass < o.maxPasses; ++pass) {
     std::set<SegmentKey> splitSegments;
@@ -185,10 +202,17 @@ int refine(std::vector<FaceMesh>& parts, const TessellationOptions& o, std::vect
       added += static_cast<Eigen::Index>(mids[p].size());
     }
     if (added == 0) return pass;
-    if (vertices + added > o.maxVertices) {
-      warnings.push_back("vertex budget of " + std::to_string(o.maxVertices) + " reached: the normal bound is not met everywhere");
+    const auto stop = [&](const std::string& why) {
+      r.stoppedByBudget = true;
+      r.warnings.push_back(why + ": refinement stopped at " + std::to_string(vertices) + " vertices, so neighbouring normals differ by more than " +
+                           shortNumber(o.maxNormalAngle * 180 / M_PI) + " deg in places (stripes and colours are coarse there)");
       return pass;
-    }
+    };
+    if (vertices + added > o.maxVertices)
+      return stop("the next pass would pass the vertex budget of " + std::to_string(o.maxVertices));
+    // A pass costs about its new vertices at the rate seen so far (the first mesh included).
+    if (o.timeLimit > 0 && elapsed() * (1.0 + static_cast<double>(added) / static_cast<double>(vertices)) > o.timeLimit)
+      return stop("the next pass would pass the time limit of " + shortNumber(o.timeLimit) + " s");
     vertices += added;
     for (size_t p = 0; p < parts.size(); ++p) {
       FaceMesh& m = parts[p];
@@ -247,6 +271,7 @@ int refine(std::vector<FaceMesh>& parts, const TessellationOptions& o, std::vect
       }
       m.tris.swap(next);
     }
+    report();
   }
   return pass;
 }
@@ -290,7 +315,7 @@ TessellationResult tessellateForInspection(const TopoDS_Shape& shape, const Tess
     }
     parts.push_back(std::move(m));
   }
-  r.passes = refine(parts, o, r.warnings);
+  r.passes = refine(parts, o, t0, r);
   if (parts.empty()) throw Error("no face of the shape could be meshed");
 
   // Gather the faces into one mesh and measure what the refinement reached.

@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 #include <TopoDS_Shape.hxx>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,18 @@ struct TessellationOptions {
   double maxNormalAngle = 0.035;         // rad (2 deg) between exact normals at the ends of a mesh edge
   double relativeDeflection = 5e-4;      // BRepMesh chordal deflection, times the bounding-box diagonal
   int maxPasses = 16;                    // refinement passes after BRepMesh
-  Eigen::Index maxVertices = 4000000;    // refinement stops (with a warning) before exceeding this
+  // Interactive bounds (issue 22: zebra on a fill gone wrong built 3 million vertices in 73 s with no
+  // way out). Refinement stops, with a warning saying what was not reached, before a pass would
+  // take the mesh past maxVertices or, at the rate measured so far, past timeLimit seconds; the
+  // GUI derives the budget from its view's pixels and the CLI from the image's. What is built by
+  // then is a whole, crack-free mesh: only the normal bound is not met everywhere.
+  Eigen::Index maxVertices = 1000000;    // about one vertex per 2 pixels of a full-HD view
+  double timeLimit = 0;                  // seconds; 0: no limit
   std::vector<int> faces;                // 1-based faces to tessellate; empty = all faces
   int threads = 0;                       // 0 = all hardware threads
+  // Called after the first mesh and after each pass with the share of the budget (vertices or
+  // time, whichever is nearer) used so far; returning false cancels (tessellateForInspection throws).
+  std::function<bool(double)> progress;
 };
 
 struct TessellationResult {
@@ -42,11 +52,13 @@ struct TessellationResult {
   double maxInteriorNormalAngle = 0;     // measured over edges inside faces (the refined ones)
   double maxBoundaryNormalAngle = 0;     // measured over edges on face boundaries
   int passes = 0, faces = 0;
+  bool stoppedByBudget = false;          // maxVertices or timeLimit ended the refinement early
   std::vector<std::string> warnings;
   double seconds = 0;
 };
 
-// Throws holefill::Error for a null shape, a shape without faces or a face index out of range.
+// Throws holefill::Error for a null shape, a shape without faces, a face index out of range, or
+// when progress cancels.
 TessellationResult tessellateForInspection(const TopoDS_Shape& shape, const TessellationOptions& options = {});
 
 }  // namespace holefill

@@ -229,11 +229,15 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, "The learned-model backend (loads libtorch on first call).");
   m.def("continuityReport", &report, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
         "G0/G1/G2 of a face against the hole of the model holding the given edges, as JSON.");
-  m.def("inspectionMesh", [](const std::string& brep, const std::vector<int>& faces, double maxNormalAngleDeg) {
+  m.def("inspectionMesh", [](const std::string& brep, const std::vector<int>& faces, double maxNormalAngleDeg, long long maxVertices,
+                             double timeLimit, const std::function<bool(double)>& progress) {
     return guarded([&] {
       TessellationOptions o;
       o.faces = faces;
       o.maxNormalAngle = maxNormalAngleDeg * M_PI / 180.0;
+      if (maxVertices > 0) o.maxVertices = maxVertices;
+      o.timeLimit = timeLimit;
+      if (progress) o.progress = [&](double f) { py::gil_scoped_acquire g; return progress(f); };
       TessellationResult t;
       {
         py::gil_scoped_release release;
@@ -257,11 +261,14 @@ PYBIND11_MODULE(HoleFillApp, m) {
       d["maxInteriorNormalAngle"] = t.maxInteriorNormalAngle;
       d["maxBoundaryNormalAngle"] = t.maxBoundaryNormalAngle;
       d["warnings"] = t.warnings;
+      d["stoppedByBudget"] = t.stoppedByBudget;
       d["seconds"] = t.seconds;
       return d;
     });
-  }, py::arg("brep"), py::arg("faces") = std::vector<int>(), py::arg("maxNormalAngleDeg") = 2.0,
-     "Adaptive tessellation with exact per-vertex fields (points, normals, k1 >= k2, d1, ...) as a dict of arrays.");
+  }, py::arg("brep"), py::arg("faces") = std::vector<int>(), py::arg("maxNormalAngleDeg") = 2.0, py::arg("maxVertices") = 0,
+     py::arg("timeLimit") = 0.0, py::arg("progress") = nullptr,
+     "Adaptive tessellation with exact per-vertex fields (points, normals, k1 >= k2, d1, ...) as a dict of arrays;\n"
+     "maxVertices (0: the core's 1,000,000) and timeLimit (s, 0: none) bound it, progress(f) -> False cancels.");
   m.def("curvatureValues", [](const Eigen::MatrixX3d& normals, const Eigen::VectorXd& k1, const Eigen::VectorXd& k2,
                               const Eigen::MatrixX3d& d1, const std::string& quantity, const Eigen::Vector3d& direction) {
     return guarded([&] {

@@ -34,13 +34,17 @@ def _faceIndices(faces):
     return out
 
 
-def inspectionMesh(shape, faces=None, maxNormalAngle=2.0):
+def inspectionMesh(shape, faces=None, maxNormalAngle=2.0, maxVertices=0, timeLimit=0.0, progress=None):
     """Adaptive tessellation of `shape` (or of the given faces, "FaceK" names or 1-based indices)
     whose neighbouring vertex normals differ by at most maxNormalAngle degrees, with the exact
     surface fields per vertex: a dict of NumPy arrays points, normals, k1, k2 (principal
     curvatures, k1 >= k2, convex positive), d1 (direction of k1), triangles, triangleFace,
-    vertexFace, plus edges [(edgeIndex, polyline)], and the reached normal angles (radians)."""
-    return HoleFillApp.inspectionMesh(_brep(shape), _faceIndices(faces), float(maxNormalAngle))
+    vertexFace, plus edges [(edgeIndex, polyline)], and the reached normal angles (radians).
+    The refinement stops before passing maxVertices (0: 1,000,000) or, by its measured rate,
+    timeLimit seconds (0: none); then stoppedByBudget is True and warnings say what was not
+    reached. progress(fraction) -> False cancels (HoleFillError)."""
+    return HoleFillApp.inspectionMesh(_brep(shape), _faceIndices(faces), float(maxNormalAngle), int(maxVertices),
+                                      float(timeLimit), progress)
 
 
 def curvatureMap(shape, quantity="mean", faces=None, percentiles=(2.0, 98.0), valueRange=None, symmetric=None,

@@ -120,3 +120,50 @@ TEST(ShapeTessellation, BadInputsGiveClearErrors) {
   o.maxNormalAngle = std::nan("");
   EXPECT_THROW(tessellateForInspection(BRepPrimAPI_MakeBox(1, 1, 1).Shape(), o), Error);
 }
+
+// Issue 22: an overlay on a surface that bends a lot (here a tight bound on the valence-5 fill)
+// must stop at its budget with a whole mesh and say so, not refine for a minute.
+TEST(ShapeTessellation, VertexBudgetStopsRefinementWithAWholeMesh) {
+  TessellationOptions o;
+  o.maxNormalAngle = 0.5 * M_PI / 180;
+  const TopoDS_Shape shape = samples::byName("cc_valence5");
+  const TessellationResult free = tessellateForInspection(shape, o);
+  ASSERT_FALSE(free.stoppedByBudget);
+  o.maxVertices = free.mesh.fields.size() / 3;
+  const TessellationResult t = tessellateForInspection(shape, o);
+  EXPECT_TRUE(t.stoppedByBudget);
+  EXPECT_LE(t.mesh.fields.size(), o.maxVertices);
+  EXPECT_LT(t.passes, free.passes);
+  ASSERT_FALSE(t.warnings.empty());
+  EXPECT_NE(t.warnings.back().find("vertex budget"), std::string::npos) << t.warnings.back();
+  EXPECT_GT(t.maxInteriorNormalAngle, o.maxNormalAngle);  // what the warning says was not reached
+  for (Eigen::Index k = 0; k < t.mesh.triangles.rows(); ++k)
+    for (int i = 0; i < 3; ++i) ASSERT_LT(t.mesh.triangles(k, i), t.mesh.fields.size());
+}
+
+TEST(ShapeTessellation, TimeLimitStopsBeforeAPassThatWouldPassIt) {
+  TessellationOptions o;
+  o.maxNormalAngle = 0.5 * M_PI / 180;
+  o.timeLimit = 1e-6;  // spent by the first mesh already: no refinement pass starts
+  const TessellationResult t = tessellateForInspection(samples::byName("cc_valence5"), o);
+  EXPECT_TRUE(t.stoppedByBudget);
+  EXPECT_EQ(t.passes, 0);
+  ASSERT_FALSE(t.warnings.empty());
+  EXPECT_NE(t.warnings.back().find("time limit"), std::string::npos) << t.warnings.back();
+}
+
+TEST(ShapeTessellation, ProgressReportsAndCancels) {
+  TessellationOptions o;
+  o.maxNormalAngle = 0.5 * M_PI / 180;
+  std::vector<double> seen;
+  o.progress = [&](double f) { seen.push_back(f); return true; };
+  const TessellationResult t = tessellateForInspection(samples::byName("cc_valence5"), o);
+  ASSERT_EQ(static_cast<int>(seen.size()), t.passes + 1);  // the first mesh, then each pass
+  for (size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_GE(seen[k], 0.0);
+    EXPECT_LE(seen[k], 1.0);
+    if (k > 0) EXPECT_GE(seen[k], seen[k - 1]);
+  }
+  o.progress = [](double) { return false; };
+  EXPECT_THROW(tessellateForInspection(samples::byName("cc_valence5"), o), Error);
+}
