@@ -186,10 +186,7 @@ void addAnchorsFromJson(QuadCage& cage, const std::string& text, const std::stri
   const auto rows = numberRows(text, 4, name);
   QuadCage c = cage;
   for (size_t r = 0; r < rows.size(); ++r) {
-    for (int k = 1; k <= 3; ++k)
-      if (std::abs(rows[r][k]) > tol::kMaxCoordinate)
-        throw Error("'" + name + "': entry " + std::to_string(r + 1) + " has a coordinate beyond " +
-                    std::to_string(static_cast<long long>(tol::kMaxCoordinate)) + " (corrupt, or in the wrong units)");
+    // (Coordinates past tol::kMaxCoordinate: CageTopology below refuses them, naming the vertex.)
     c.anchors[oneBased(rows[r][0], name, r + 1)] = Eigen::Vector3d(rows[r][1], rows[r][2], rows[r][3]);
   }
   CageTopology check(c);

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "geometry/error.h"
+#include "geometry/tolerances.h"
 
 namespace holefill {
 
@@ -17,6 +18,14 @@ CageTopology::CageTopology(const QuadCage& cage) {
   const int nv = static_cast<int>(cage.vertices.rows()), nf = static_cast<int>(cage.quads.rows());
   if (nf == 0) throw Error("the cage has no quads");
   if (!cage.vertices.allFinite()) throw Error("the cage has a vertex with a non-finite coordinate");
+  // The patches' poles are sums of products of the cage's coordinates: past tol::kMaxCoordinate
+  // they overflow and OCCT crashes on them. Checked here, where every door's cage passes (the
+  // Python door's arrays crashed FreeCAD at 1e300; only the OBJ reader checked before).
+  const auto beyond = [](const Eigen::Vector3d& p) { return p.cwiseAbs().maxCoeff() > tol::kMaxCoordinate; };
+  const std::string units = " has a coordinate beyond " + std::to_string(static_cast<long long>(tol::kMaxCoordinate)) +
+                            " (corrupt, or in the wrong units)";
+  for (int v = 0; v < nv; ++v)
+    if (beyond(cage.vertices.row(v).transpose())) throw Error(cage.vertexName(v) + units);
   auto name = [&](int f) { return cage.quadName(f); };
   std::unordered_map<std::uint64_t, int> directed;  // (from << 32 | to) → 4*face+edge
   for (int f = 0; f < nf; ++f) {
@@ -90,6 +99,7 @@ CageTopology::CageTopology(const QuadCage& cage) {
   for (const auto& [v, a] : cage.anchors) {
     if (v < 0 || v >= nv) throw Error("an anchor is given for " + cage.vertexName(v) + ", which does not exist");
     if (!a.allFinite()) throw Error("the anchor of " + cage.vertexName(v) + " is not finite");
+    if (beyond(a)) throw Error("the anchor of " + cage.vertexName(v) + units);
   }
 }
 
