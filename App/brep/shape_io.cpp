@@ -123,6 +123,11 @@ void trialReadInChild(const std::function<void()>& read, double timeLimit, const
   fflush(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
+    // A crash here is the answer, not something to handle: the child dies of its signal and the
+    // parent says so. FreeCAD's handlers (and OCCT's, which turn signals into exceptions) would
+    // make a crash look like a clean read error, after which the caller reads the same bytes in
+    // its own process (fuzzing found three such OCCT crashes: docs/fuzzing.md).
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) signal(sig, SIG_DFL);
     int code = 1;
     try {
       read();

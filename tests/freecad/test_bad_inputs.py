@@ -84,6 +84,19 @@ def test_a_hole_past_the_default_limit_stays_open_and_the_document_unchanged():
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_brep_text_that_crashes_occt_is_refused_in_a_child():
+    # Found by fuzzing (tests/fuzz/corpus/brep_text/offset_curve_null_basis): OCCT's reader crashes
+    # on it. FreeCAD's signal handlers, inherited by the throwaway child, once made the crash look
+    # like a read error, and the in-process read then took FreeCAD down.
+    import HoleFillApp
+    with open(os.path.join(CORPUS, "brep_text", "box_minus_face")) as f:
+        text = f.read()
+    at = text.index("Curve2ds ")
+    first = text.index("\n", at) + 1
+    bad = text[:first] + "9" + text[first + 1:]
+    fcharness.expect_error(lambda: HoleFillApp.findHoles(bad, False, 5.0), "crashed")
+
+
 def test_labels_that_are_not_labels_are_refused():
     m = Mesh.createSphere(1.0, 20)
     for bad in ("{", '{"segments": 3}', '{"segments": [{"label": "Q", "vertices": [0, 1]}]}'):

@@ -58,5 +58,19 @@ TEST(ShapeIo, BrepTextTheReaderHangsOnIsRefusedInTime) {
   EXPECT_LT(seconds, 10.0);
 }
 
+// Found by fuzzing: OCCT's reader dereferences a null basis curve when a 2D curve's record says
+// "offset" (9) and the basis does not follow. The crash stays in the throwaway child, which dies of
+// its signal (FreeCAD's own handlers, inherited, once turned it into a read error, and the caller
+// then crashed FreeCAD re-reading the text in its own process).
+TEST(ShapeIo, BrepTextTheReaderCrashesOnIsRefused) {
+  std::string text = shapeToBrepString(samples::boxMinusFace());
+  const size_t at = text.find("Curve2ds ");
+  ASSERT_NE(at, std::string::npos);
+  const size_t first = text.find('\n', at) + 1;  // the first 2D curve's record: "1 ..." (a line)
+  ASSERT_EQ(text[first], '1');
+  text[first] = '9';
+  EXPECT_NE(errorOf(text).find("the reader crashed on it"), std::string::npos) << errorOf(text);
+}
+
 }  // namespace
 }  // namespace holefill
