@@ -47,9 +47,12 @@ PY
 [ "$rc" = 3 ] && [ -s "$T/uniform.brep" ] && ok "one uniform level: written, tolerance not met (exit 3)" || bad "uniform level: rc=$rc"
 if "$H" fit-points "$T/bare.txt" --thb --tolerance 1e-3 --out "$T/bare.brep" --json >"$T/bare.json" 2>"$T/err"; then ok "bare x y z cloud fitted (exit 0)"; else bad "bare: $(cat "$T/err")"; fi
 grep -q "found 4[0-9] boundary points" "$T/err" && ok "its boundary found: $(grep -o 'found [0-9]* boundary points' "$T/err")" || bad "boundary: $(cat "$T/err")"
-if "$H" fit-points "$T/cloud.txt" --param bidgcn --thb --tolerance 1e-3 --out "$T/bidgcn.brep" --json >"$T/bidgcn.json" 2>"$T/err"; then ok "BIDGCN parameters, THB fit to the tolerance (exit 0)"; else bad "bidgcn: $(cat "$T/err")"; fi
-"$PY" -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['parameterization']['method']=='bidgcn' and r['met_tolerance'], r" "$T/bidgcn.json" && ok "report names bidgcn" || bad "bidgcn report: $(cat "$T/bidgcn.json")"
-expect_refusal "missing BIDGCN weights" "weights not found" "$T/o.brep" fit-points "$T/cloud.txt" --param bidgcn --weights "$T/none.pt" --out "$T/o.brep"
+# The learned parameters need libholefill_learn.so, which the ASan build (test.sh --sanitize) leaves out.
+if [ -z "${HOLEFILL_TEST_NO_LEARN:-}" ]; then
+  if "$H" fit-points "$T/cloud.txt" --param bidgcn --thb --tolerance 1e-3 --out "$T/bidgcn.brep" --json >"$T/bidgcn.json" 2>"$T/err"; then ok "BIDGCN parameters, THB fit to the tolerance (exit 0)"; else bad "bidgcn: $(cat "$T/err")"; fi
+  "$PY" -c "import json,sys; r=json.load(open(sys.argv[1])); assert r['parameterization']['method']=='bidgcn' and r['met_tolerance'], r" "$T/bidgcn.json" && ok "report names bidgcn" || bad "bidgcn report: $(cat "$T/bidgcn.json")"
+  expect_refusal "missing BIDGCN weights" "weights not found" "$T/o.brep" fit-points "$T/cloud.txt" --param bidgcn --weights "$T/none.pt" --out "$T/o.brep"
+fi
 expect_refusal "bad degree" "degree" "$T/o.brep" fit-points "$T/cloud.txt" --degree 0 --out "$T/o.brep"
 expect_refusal "broken cloud" "got 5 columns" "$T/o.brep" fit-points "$T/broken.txt" --out "$T/o.brep"
 finish
