@@ -228,6 +228,7 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
 
 TopoDS_Shape shapeFromBrepString(const std::string& brep, double timeLimit) {
   if (brep.empty()) throw Error("empty BREP text: the shape is empty");
+  if (!(timeLimit > 0)) timeLimit = 5.0 + static_cast<double>(brep.size()) / 1e6;
   checkBrepText(brep, "the BREP text");
   const auto read = [&] {
     std::istringstream in(brep);

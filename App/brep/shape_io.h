@@ -17,8 +17,9 @@ namespace holefill {
 TopoDS_Shape readShape(const std::string& path, double timeLimitSeconds = 60.0);
 void writeShape(const TopoDS_Shape& shape, const std::string& path);  // by extension, atomically
 
-// BREP text (the Python door's form of a shape): read like a file, under the same time limit.
-TopoDS_Shape shapeFromBrepString(const std::string& brep, double timeLimitSeconds = 60.0);
+// BREP text (the Python door's form of a shape): read like a file, under a time limit; 0: 5 s and
+// 1 s per MB of text (OCCT reads about 75 MB/s), so a bad text holds FreeCAD seconds, not a minute.
+TopoDS_Shape shapeFromBrepString(const std::string& brep, double timeLimitSeconds = 0);
 std::string shapeToBrepString(const TopoDS_Shape& shape);
 
 // Throws when a vertex, pole or curve/surface sample is NaN, infinite or beyond tol::kMaxCoordinate.

@@ -97,6 +97,18 @@ def test_brep_text_that_crashes_occt_is_refused_in_a_child():
     fcharness.expect_error(lambda: HoleFillApp.findHoles(bad, False, 5.0), "crashed")
 
 
+def test_brep_text_that_hangs_occt_is_refused_in_seconds():
+    # Found by fuzzing (tests/fuzz/corpus/brep_text/edge_representation_hang): OCCT's reader loops
+    # for ever on it. Through the Python door it costs FreeCAD 5 s (and 1 s per MB of text).
+    import time
+    import HoleFillApp
+    with open(os.path.join(CORPUS, "brep_text", "edge_representation_hang")) as f:
+        text = f.read()
+    t0 = time.time()
+    fcharness.expect_error(lambda: HoleFillApp.findHoles(text, False, 5.0), "took longer than 5 s")
+    assert time.time() - t0 < 15, time.time() - t0
+
+
 def test_labels_that_are_not_labels_are_refused():
     m = Mesh.createSphere(1.0, 20)
     for bad in ("{", '{"segments": 3}', '{"segments": [{"label": "Q", "vertices": [0, 1]}]}'):
