@@ -25,8 +25,8 @@ MinAngleResult triangulateMinAngle(const std::vector<Eigen::Vector3d>& loop,
     normal[i] = len > 0 ? Eigen::Vector3d(normalSums[i] / len) : Eigen::Vector3d::Zero();
   }
   // The largest angle between two boundary normals: the pair of least dot product, then its angle
-  // measured as everywhere else (a quadratic scan of dot products, not of angles: 20,000 boundary
-  // vertices cost 0.2 s instead of 6 s).
+  // measured as everywhere else (a quadratic scan of dot products, not of angles: atan2 was 12%
+  // of a 5,000-vertex hole's fill when every pair got one).
   double spread = 0, leastDot = std::numeric_limits<double>::infinity();
   int pi = -1, pj = -1;
   for (int i = 0; i < n; ++i) {
@@ -79,13 +79,16 @@ MinAngleResult triangulateMinAngle(const std::vector<Eigen::Vector3d>& loop,
   using Key = std::tuple<int, double, int>;  // pass, angle, vertex
   std::set<Key> ears;
   std::vector<Key> keyOf(n);
+  auto key = [&](int i) {
+    const double angle = earAngle(i);  // NaN (coincident points) would break the set's order
+    return Key(pass(i), std::isnan(angle) ? std::numeric_limits<double>::infinity() : angle, i);
+  };
   auto rekey = [&](int i) {
     ears.erase(keyOf[i]);
-    const double angle = earAngle(i);  // NaN (coincident points) would break the set's order
-    keyOf[i] = Key(pass(i), std::isnan(angle) ? std::numeric_limits<double>::infinity() : angle, i);
+    keyOf[i] = key(i);
     ears.insert(keyOf[i]);
   };
-  for (int i = 0; i < n; ++i) rekey(i);
+  for (int i = 0; i < n; ++i) ears.insert(keyOf[i] = key(i));
 
   int alive = n, last = 0;
   while (alive > 3) {
