@@ -61,6 +61,9 @@ expect_error "bad method" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --met
 expect_error "bad continuity" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --continuity G7
 expect_error "bad edge name" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge0
 expect_error "edges not on a hole" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edges Edge9999
+# Edges of two different holes are not one loop (issue 22 found such a fill accepted with exit 0).
+expect_error "edges of two holes" 1 fill "$T/sheet_two_holes.brep" --out "$T/o.brep" --edges Edge5,Edge9
+grep -q "no hole loop contains" "$T/err" || { fail=$((fail+1)); echo "FAIL edges of two holes: the error does not say so"; }
 expect_error "edge continuity malformed" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edge-continuity Edge3
 expect_error "edge continuity bad level" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edge-continuity Edge3=G5
 expect_error "edge continuity off the loop" 1 fill "$T/panel_6_sided.brep" --out "$T/o.brep" --edge-continuity Edge9999=G0
