@@ -3,8 +3,6 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Curve2d.hxx>
 #include <BRepAdaptor_Surface.hxx>
-#include <GCPnts_AbscissaPoint.hxx>
-#include <GCPnts_UniformAbscissa.hxx>
 #include <algorithm>
 #include <cmath>
 
@@ -37,17 +35,35 @@ bool supportNormal(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, E
 
 namespace {
 
-// Parameters of n+1 points uniform in arc length over [first, last].
-std::vector<double> uniformAbscissa(const BRepAdaptor_Curve& c, int n) {
-  std::vector<double> ts;
-  GCPnts_UniformAbscissa ua(c, n + 1, c.FirstParameter(), c.LastParameter());
-  if (ua.IsDone() && ua.NbPoints() == n + 1) {
-    for (int i = 1; i <= ua.NbPoints(); ++i) ts.push_back(ua.Parameter(i));
-  } else {  // very short or irregular curves: uniform in parameter
-    for (int i = 0; i <= n; ++i) ts.push_back(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * i / n);
+// Parameters of n+1 points uniform in arc length over [first, last], and the curve's length,
+// both along a polyline of 32 points per sample interval (chord error far below the sampling's).
+// OCCT's GCPnts_UniformAbscissa integrates adaptively, in time no one bounds: on a curve with one
+// pole thrown 100 times further out (found by fuzzing) a fill spent 13 s there.
+std::vector<double> uniformAbscissa(const BRepAdaptor_Curve& c, int n, double& length) {
+  const double t0 = c.FirstParameter(), t1 = c.LastParameter();
+  const int m = 32 * n;
+  std::vector<double> s(m + 1, 0.0);
+  gp_Pnt prev = c.Value(t0);
+  for (int i = 1; i <= m; ++i) {
+    const gp_Pnt p = c.Value(t0 + (t1 - t0) * i / m);
+    s[i] = s[i - 1] + prev.Distance(p);
+    prev = p;
   }
-  ts.front() = c.FirstParameter();
-  ts.back() = c.LastParameter();
+  length = s[m];
+  std::vector<double> ts(n + 1);
+  for (int k = 0, i = 0; k <= n; ++k) {
+    if (!(length > 0)) {  // a point-like edge: uniform in parameter
+      ts[k] = t0 + (t1 - t0) * k / n;
+      continue;
+    }
+    const double target = length * k / n;
+    while (i < m && s[i + 1] < target) ++i;
+    const double step = i < m ? s[i + 1] - s[i] : 0.0;
+    const double f = step > 0 ? std::clamp((target - s[i]) / step, 0.0, 1.0) : 0.0;
+    ts[k] = t0 + (t1 - t0) * (i + f) / m;
+  }
+  ts.front() = t0;
+  ts.back() = t1;
   return ts;
 }
 
@@ -73,10 +89,10 @@ std::vector<BoundarySample> sampleBoundary(const Hole& hole, const BoundarySampl
   for (size_t k = 0; k < hole.edges.size(); ++k) {
     const HoleEdge& he = hole.edges[k];
     BRepAdaptor_Curve c(he.edge);
-    const double len = GCPnts_AbscissaPoint::Length(c);
     int n = std::max(opt.minSamplesPerEdge, static_cast<int>(std::ceil(turningAngle(c) / opt.angularStep)));
     n = std::min(n, std::max(opt.maxSamplesPerEdge, opt.minSamplesPerEdge));
-    std::vector<double> ts = uniformAbscissa(c, n);
+    double len = 0;
+    std::vector<double> ts = uniformAbscissa(c, n, len);
     const bool reversed = he.edge.Orientation() == TopAbs_REVERSED;
     if (reversed) std::reverse(ts.begin(), ts.end());
     const SupportView support(he.edge, he.support);

@@ -143,7 +143,15 @@ GnurbsBrep gnurbsToBrep(const G2GnurbsResult& result, const GnurbsBrepOptions& o
   TopoDS_Shell shell;
   BRep_Builder builder;
   builder.MakeShell(shell);
-  for (const TopoDS_Face& f : faces) builder.Add(shell, sewing.IsModified(f) ? sewing.Modified(f) : f);
+  for (size_t k = 0; k < faces.size(); ++k) {
+    const TopoDS_Shape f = sewing.IsModified(faces[k]) ? sewing.Modified(faces[k]) : TopoDS_Shape(faces[k]);
+    // Sewing drops a face it finds degenerate (a patch collapsed to a curve by coincident cage
+    // vertices, found by fuzzing), and adding the null shape it leaves crashed in OCCT.
+    if (f.IsNull())
+      throw Error("the patch of control face " + std::to_string(result.patches[groups[k].patches[0]].face) +
+                  " is degenerate (coincident cage vertices?): sewing removed it");
+    builder.Add(shell, f);
+  }
 
   out.faces = static_cast<int>(faces.size());
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
