@@ -53,11 +53,15 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     // Chosen by the data: the control cells start square, the larger count along the longer
     // side. 12 x 12 over a 10:1 strip put 12 control points across 0.77 units of noisy scan,
     // which the fit followed (data max against the truth 2.1e-2, ten times the noise).
+    // The domain is the rectangle and whatever of the map lies past it (stretches left free,
+    // an L's other arm beyond a held inner leg).
+    const double width = std::max(p.width, p.uv.col(0).maxCoeff()) - std::min(0.0, p.uv.col(0).minCoeff());
+    const double height = std::max(p.height, p.uv.col(1).maxCoeff()) - std::min(0.0, p.uv.col(1).minCoeff());
     const int most = std::max(fo.controlU, fo.controlV);
-    const double ratio = std::min(p.width, p.height) / std::max(p.width, p.height);
+    const double ratio = std::min(width, height) / std::max(width, height);
     const int fewer = std::max(4, static_cast<int>(std::ceil(most * ratio)));
-    fo.controlU = p.width >= p.height ? most : fewer;
-    fo.controlV = p.width >= p.height ? fewer : most;
+    fo.controlU = width >= height ? most : fewer;
+    fo.controlV = width >= height ? fewer : most;
   }
   r.fit = fitWith(fo);
   if (o.extend) {
@@ -77,8 +81,11 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     };
     if (fails(r.fit)) {
       char line[200];
-      std::snprintf(line, sizeof line, "the G%d extension pulled the fit off the region's data (max %.2e, rms %.2e against %.2e, %.2e without it)",
-                    o.extension.order - 1, r.fit.dataMax, r.fit.dataRms, bare.dataMax, bare.dataRms);
+      const std::string which = o.extensionSource == LabeledFitOptions::ExtensionSource::Continuation
+                                    ? "G" + std::to_string(o.extension.order - 1) + " extension"
+                                    : "extension sampled from the thin-plate fit";
+      std::snprintf(line, sizeof line, "the %s pulled the fit off the region's data (max %.2e, rms %.2e against %.2e, %.2e without it)",
+                    which.c_str(), r.fit.dataMax, r.fit.dataRms, bare.dataMax, bare.dataRms);
       std::string why = line;
       bool kept = false;
       if (o.extension.order > 2 && o.extensionSource == LabeledFitOptions::ExtensionSource::Continuation) {

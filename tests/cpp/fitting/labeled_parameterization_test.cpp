@@ -200,6 +200,31 @@ TEST(LabeledParameterization, ConcaveLShapeUSlotAndBittenCornerKeepASimpleBounda
   }
 }
 
+// An L labeled by its corner angles (test_regions.h): its North side runs round the inner corner,
+// a reflex turn, and neither leg lies inside the other's line, so nothing was left free and the
+// map straightened the turn (ARAP energy 0.09 on the corpus's saddle L, data max 8.6e-3); its
+// West side runs round a convex corner. One leg of North is held, the one running along South
+// (held on the other, the map turned the left arm round by 90° and ballooned): on a plane, an
+// isometric map exists, and this one is close to it.
+TEST(LabeledParameterization, AnLLabeledByCornerAnglesHoldsOneLegOfTheReflexSide) {
+  Eigen::MatrixX2d truth;
+  const TriangleMesh region = testregions::gridRegion(
+      40, 40, 0.025, [](double x, double y) { return x < 0.5 || y < 0.5; },
+      [](double x, double y) { return Eigen::Vector3d(10 * x, 10 * y, 0); }, truth);
+  const LabeledParameterization p = parameterizeLabeled(region, testregions::lShapeCornerLabels(region, truth));
+  EXPECT_EQ(p.flippedTriangles, 0);
+  EXPECT_LT(p.arapEnergy, 1e-3);
+  bool northLeft = false;
+  for (const auto& w : p.warnings) northLeft = northLeft || w.find("of the North side lie inside") != std::string::npos;
+  EXPECT_TRUE(northLeft);
+  // The inner leg along the right arm (y = 0.5) on the rectangle's top, at the height of the arm.
+  for (Eigen::Index v = 0; v < truth.rows(); ++v)
+    if (std::abs(truth(v, 1) - 0.5) < 1e-9 && truth(v, 0) > 0.55) {
+      EXPECT_NEAR(p.uv(v, 1), p.height, 1e-6);
+      EXPECT_NEAR(p.uv(v, 1), 5, 0.05);
+    }
+}
+
 // An L-shape cut from a cone (developable: a map without distortion exists) whose ARAP rounds end
 // with triangles turned over where the stretch left free meets a held side: the map is relaxed by
 // the fold-free descent instead, and no triangle is left folded (before: 2 slivers kept folded).

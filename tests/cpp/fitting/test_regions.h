@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -70,6 +71,39 @@ inline std::vector<LabeledSegment> boundingBoxLabels(const TriangleMesh& region,
     labels.push_back(seg);
   }
   return labels;
+}
+
+// Labels with the corners given: the outer boundary vertices nearest the four points `at` (true
+// parameters, in S, E, N, W order of their segments' starts: SW, SE, NE, NW); S, E, N, W run
+// between them anticlockwise, every boundary vertex labeled (the corpus's labels by corner angles
+// put corners where the bounding-box rule would not).
+inline std::vector<LabeledSegment> cornerLabels(const TriangleMesh& region, const Eigen::MatrixX2d& uv, const std::array<Eigen::Vector2d, 4>& at) {
+  const MeshHoleReport holes = findMeshHoles(region);
+  size_t outer = 0;
+  for (size_t k = 1; k < holes.holes.size(); ++k)
+    if (holes.holes[k].length > holes.holes[outer].length) outer = k;
+  const std::vector<int>& loop = holes.holes.at(outer).loop;
+  std::array<size_t, 4> corner{};
+  for (int c = 0; c < 4; ++c)
+    for (size_t k = 0; k < loop.size(); ++k)
+      if ((uv.row(loop[k]).transpose() - at[c]).norm() < (uv.row(loop[corner[c]]).transpose() - at[c]).norm()) corner[c] = k;
+  std::vector<LabeledSegment> labels;
+  for (int side = 0; side < 4; ++side) {
+    LabeledSegment seg{static_cast<Side>(side), {}};
+    for (size_t k = corner[side];; k = (k + 1) % loop.size()) {
+      seg.vertices.push_back(loop[k]);
+      if (k == corner[(side + 1) % 4]) break;
+    }
+    labels.push_back(seg);
+  }
+  return labels;
+}
+
+// An L of the unit square less its upper right quarter, labeled by four of its five convex corners
+// as the corpus's corner-angle rule does: S the bottom, E the right arm's end, N the inner corner's
+// two legs (a reflex turn inside one side), W round the convex corner at the top left.
+inline std::vector<LabeledSegment> lShapeCornerLabels(const TriangleMesh& region, const Eigen::MatrixX2d& uv) {
+  return cornerLabels(region, uv, {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 0.5), Eigen::Vector2d(0.5, 1)});
 }
 
 }  // namespace holefill::testregions
