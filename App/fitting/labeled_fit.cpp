@@ -41,7 +41,9 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     // carried out into the extension, and the fit with it missed the data (median data max
     // 1.1e-2 with the extension against 5.3e-3 without, on the corpus). The region's own vertices
     // are then fitted where they are.
-    r.extension = extendedAt(o.extension);
+    DomainExtensionOptions eo = o.extension;
+    eo.continueSurface = o.extensionSource == LabeledFitOptions::ExtensionSource::Continuation;
+    r.extension = extendedAt(eo);
   }
   bool extended = o.extend;
   auto fitWith = [&](const TensorFitOptions& fo) {

@@ -186,3 +186,26 @@ TEST(DomainExtension, AFlatTriangleInTheMapIsLeftOutNotASingularSystem) {
   EXPECT_GT(e.mesh.vertices.rows(), region.vertices.rows());
   EXPECT_TRUE(e.mesh.vertices.allFinite());
 }
+
+// Found by fuzzing (tests/fuzz/corpus/fit/stretched_map_extension_grid): a rectangle far larger
+// than its region in the map's units asked for a grid of the region's own spacing over all of it,
+// and its factorization took 321 s. The grid is bounded by the region's size (16 nodes per vertex
+// and 10,000 more), and without the continuation (continueSurface false: the caller places the
+// new samples) nothing is solved, and the samples and triangles are the same.
+TEST(DomainExtension, ARectangleFarLargerThanItsRegionGetsABoundedGrid) {
+  Eigen::MatrixX2d uv;
+  const TriangleMesh region = ellipseRegion([](double x, double y) { return 0.1 * x * y; }, uv);
+  const int nv = static_cast<int>(region.vertices.rows());
+  DomainExtensionOptions o;
+  o.order = 2;
+  const DomainExtension solved = extendToRectangle(region, uv, 400, 200, o);
+  EXPECT_LE(solved.mesh.vertices.rows() - nv, 16 * nv + 10000 + 2000);  // the bound, and the padding's rim
+  EXPECT_GT(solved.mesh.vertices.rows() - nv, 1000);
+  EXPECT_TRUE(solved.mesh.vertices.allFinite());
+  o.continueSurface = false;
+  const DomainExtension placed = extendToRectangle(region, uv, 400, 200, o);
+  EXPECT_EQ(placed.uv.rows(), solved.uv.rows());
+  EXPECT_EQ(placed.mesh.triangles.rows(), solved.mesh.triangles.rows());
+  EXPECT_TRUE(placed.uv.isApprox(solved.uv));
+  EXPECT_TRUE(placed.mesh.vertices.allFinite());
+}
