@@ -39,7 +39,7 @@ struct DomainExtensionOptions {
   // False: the domain's new samples and triangles only, their positions left for the caller to
   // place (labeled_fit's extension sampled from a thin-plate fit), without solving Δᵏx = 0 — a
   // solve it would throw away, and the one part whose cost grows past the region's own (found
-  // by fuzzing: 9 s on a stretched map of 1,140 vertices, past the 120 s limit under the sanitizers).
+  // by fuzzing: 19 s on a stretched map of 1,140 vertices, past the 120 s limit under the sanitizers).
   bool continueSurface = true;
 };
 

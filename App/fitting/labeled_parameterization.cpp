@@ -5,9 +5,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "fitting/boundary_embedding.h"
 #include "fitting/slim_descent.h"
@@ -120,7 +120,7 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
       const size_t a = std::min(lo, j > 0 ? j - 1 : 0);
       direction[j] = (at[hi] - at[a]).normalized();
     }
-    const double sharp = 30 * M_PI / 180;
+    const double sharp = 30 * M_PI / 180, along20 = std::cos(20 * M_PI / 180);  // a turn; within 20° of a line
     // The window: 3% of the chord, and at least four boundary edges (a staircase boundary of
     // grid cells turns 90° at every step, which is not a notch).
     std::vector<double> edges;
@@ -165,13 +165,13 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
       const Eigen::Vector2d outward = turn * Eigen::Vector2d(std::sin(a), -std::cos(a));
       double support = -std::numeric_limits<double>::infinity();
       for (size_t j = 0; j < sp.size(); ++j)
-        if (!alignedOnly || direction[j].dot(along) >= std::cos(20 * M_PI / 180)) support = std::max(support, outward.dot(at[j]));
+        if (!alignedOnly || direction[j].dot(along) >= along20) support = std::max(support, outward.dot(at[j]));
       std::vector<int> in;
       double length = 0;
       Eigen::Vector3d runs = Eigen::Vector3d::Zero();
       for (size_t j = 0; j < sp.size(); ++j) {
         if (support - outward.dot(at[j]) > depth * chord.norm()) continue;
-        if (direction[j].dot(along) < std::cos(20 * M_PI / 180)) continue;
+        if (direction[j].dot(along) < along20) continue;
         if (!in.empty() && in.back() == sp[j - 1]) {
           length += (at[j] - at[j - 1]).norm();
           runs += (X.row(loop[sp[j]]) - X.row(loop[sp[j - 1]])).transpose();

@@ -44,35 +44,6 @@ inline TriangleMesh gridRegion(int nx, int ny, double h, const std::function<boo
   return m;
 }
 
-// Labels by the corpus's bounding-box rule (tests/corpus/labeled_regions.py): the corners are the
-// outer boundary vertices nearest the corners of the region's box in its true parameters `uv`;
-// S, E, N, W run between them anticlockwise, every boundary vertex labeled.
-inline std::vector<LabeledSegment> boundingBoxLabels(const TriangleMesh& region, const Eigen::MatrixX2d& uv) {
-  const MeshHoleReport holes = findMeshHoles(region);
-  size_t outer = 0;
-  for (size_t k = 1; k < holes.holes.size(); ++k)
-    if (holes.holes[k].length > holes.holes[outer].length) outer = k;
-  const std::vector<int>& loop = holes.holes.at(outer).loop;
-  const Eigen::Vector2d lo = uv.colwise().minCoeff().transpose(), hi = uv.colwise().maxCoeff().transpose();
-  auto nearest = [&](double u, double v) {
-    size_t best = 0;
-    for (size_t k = 0; k < loop.size(); ++k)
-      if ((uv.row(loop[k]).transpose() - Eigen::Vector2d(u, v)).norm() < (uv.row(loop[best]).transpose() - Eigen::Vector2d(u, v)).norm()) best = k;
-    return best;
-  };
-  const size_t corner[4] = {nearest(lo.x(), lo.y()), nearest(hi.x(), lo.y()), nearest(hi.x(), hi.y()), nearest(lo.x(), hi.y())};
-  std::vector<LabeledSegment> labels;
-  for (int side = 0; side < 4; ++side) {
-    LabeledSegment seg{static_cast<Side>(side), {}};
-    for (size_t k = corner[side];; k = (k + 1) % loop.size()) {
-      seg.vertices.push_back(loop[k]);
-      if (k == corner[(side + 1) % 4]) break;
-    }
-    labels.push_back(seg);
-  }
-  return labels;
-}
-
 // Labels with the corners given: the outer boundary vertices nearest the four points `at` (true
 // parameters, in S, E, N, W order of their segments' starts: SW, SE, NE, NW); S, E, N, W run
 // between them anticlockwise, every boundary vertex labeled (the corpus's labels by corner angles
@@ -97,6 +68,14 @@ inline std::vector<LabeledSegment> cornerLabels(const TriangleMesh& region, cons
     labels.push_back(seg);
   }
   return labels;
+}
+
+// Labels by the corpus's bounding-box rule (tests/corpus/labeled_regions.py): the corners are the
+// outer boundary vertices nearest the corners of the region's box in its true parameters `uv`;
+// S, E, N, W run between them anticlockwise, every boundary vertex labeled.
+inline std::vector<LabeledSegment> boundingBoxLabels(const TriangleMesh& region, const Eigen::MatrixX2d& uv) {
+  const Eigen::Vector2d lo = uv.colwise().minCoeff().transpose(), hi = uv.colwise().maxCoeff().transpose();
+  return cornerLabels(region, uv, {lo, Eigen::Vector2d(hi.x(), lo.y()), hi, Eigen::Vector2d(lo.x(), hi.y())});
 }
 
 // An L of the unit square less its upper right quarter, labeled by four of its five convex corners
