@@ -83,6 +83,11 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
       if (turn == 0 && v == loop[1 % L] && a == loop[0]) turn = -1;
     }
   if (turn == 0) return {};
+  Eigen::MatrixX3d normal = Eigen::MatrixX3d::Zero(X.rows(), 3);  // area-weighted, along the triangles' orientation
+  for (int t = 0; t < tri.rows(); ++t) {
+    const Eigen::RowVector3d c = (X.row(tri(t, 1)) - X.row(tri(t, 0))).cross(X.row(tri(t, 2)) - X.row(tri(t, 0)));
+    for (int k = 0; k < 3; ++k) normal.row(tri(t, k)) += c;
+  }
   std::array<int, 4> released{};
   const std::array<std::vector<int>, 4> labeled = sidePerimeter;  // as given, before any side is released
   for (int side = 0; side < 4; ++side) {
@@ -131,15 +136,27 @@ std::array<int, 4> releaseInwardStretches(const TriangleMesh& region, const Eige
     // Whether it turns away from the region at a corner somewhere: by more than 60° within the
     // window (an L's inner corner turns 90° there; a concave arc turns gradually, at most 45° on
     // the corpus's noisy crescents, and is a bite for the first pass).
+    // The turn is the one between the chords into and out of j in space, seen along the surface's
+    // normal there (the triangles' mean over the window): the geodesic turn, as in the developed
+    // side, but without its heading, which sums every vertex's angle error. Under scan noise
+    // (0.2% of the diagonal) a straight side developed turned 75° within the window, 12° seen
+    // this way; on clean regions the two agree to a degree.
     bool reflex = false;
     for (size_t j = 0; j < sp.size(); ++j) {
       size_t lo = j, hi = j;
       while (lo > 0 && cumulative[j] - cumulative[lo] < w) --lo;
       while (hi + 1 < sp.size() && cumulative[hi] - cumulative[j] < w) ++hi;
       if (lo == j || hi == j) continue;
-      const Eigen::Vector2d a = (at[j] - at[lo]).normalized(), b = (at[hi] - at[j]).normalized();
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();
+      for (size_t q = lo; q <= hi; ++q) n += normal.row(loop[sp[q]]).transpose();
+      if (!(n.norm() > 0)) continue;
+      n.normalize();
+      Eigen::Vector3d a = (X.row(loop[sp[j]]) - X.row(loop[sp[lo]])).transpose(), b = (X.row(loop[sp[hi]]) - X.row(loop[sp[j]])).transpose();
+      a -= a.dot(n) * n, b -= b.dot(n) * n;
+      if (!(a.norm() > 0 && b.norm() > 0)) continue;
+      a.normalize(), b.normalize();
       turnAt[j] = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
-      reflex = reflex || (turnAt[j] > 2 * sharp && turn * (a.x() * b.y() - a.y() * b.x()) < 0);
+      reflex = reflex || (turnAt[j] > 2 * sharp && turn * a.cross(b).dot(n) < 0);
     }
     // The opposite side's chord in space: of two straight stretches about as long (the legs of a
     // reflex turn, an L's inner corner labeled within one side), the one running along the

@@ -141,15 +141,6 @@ TriangleMesh bittenHalfCylinder(std::vector<LabeledSegment>& labels) {
   return region;
 }
 
-// Scan noise: a normal deviate of `fraction` of the region's diagonal on every coordinate.
-void addNoise(TriangleMesh& region, double fraction, unsigned seed) {
-  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0, fraction * diagonal);
-  for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
-    for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
-}
-
 }  // namespace
 
 // The corpus's failure classes (issue 21): labels by the bounding-box rule run round a notch, a
@@ -192,7 +183,7 @@ TEST(LabeledFit, ConcaveLShapeUSlotBittenCornerAndCrescentAreLeftFreeAndFit) {
 TEST(LabeledFit, AnExtensionThatPullsTheFitOffNoisyDataIsLoweredOrLeftOut) {
   std::vector<LabeledSegment> labels;
   TriangleMesh region = bittenHalfCylinder(labels);
-  addNoise(region, 0.002, 7);
+  testregions::addNoise(region, 0.002, 7);
   // The paper's continuation carries the noise out (a Cauchy problem), and the guard catches it.
   LabeledFitOptions o;
   o.extensionSource = LabeledFitOptions::ExtensionSource::Continuation;
@@ -281,7 +272,7 @@ TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
   LabeledFitOptions o;
   o.fit.controlU = o.fit.controlV = 5;
   const LabeledFitResult clean = fitLabeled(region, labels, o);
-  addNoise(region, 0.002, 11);
+  testregions::addNoise(region, 0.002, 11);
   const LabeledFitResult noisy = fitLabeled(region, labels, o);
   std::printf("bitten half cylinder from 5x5: clean %dx%d (noise %.1e), 0.2%% noise %dx%d (noise estimated %.2e), data rms %.2e\n",
               clean.fit.surface.numU(), clean.fit.surface.numV(), clean.noise, noisy.fit.surface.numU(), noisy.fit.surface.numV(), noisy.noise,

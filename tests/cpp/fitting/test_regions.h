@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <functional>
+#include <random>
 #include <vector>
 
 #include "fitting/labeled_parameterization.h"
@@ -83,6 +84,15 @@ inline std::vector<LabeledSegment> boundingBoxLabels(const TriangleMesh& region,
 // two legs (a reflex turn inside one side), W round the convex corner at the top left.
 inline std::vector<LabeledSegment> lShapeCornerLabels(const TriangleMesh& region, const Eigen::MatrixX2d& uv) {
   return cornerLabels(region, uv, {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 0.5), Eigen::Vector2d(0.5, 1)});
+}
+
+// Scan noise: a normal deviate of `fraction` of the region's diagonal on every coordinate.
+inline void addNoise(TriangleMesh& region, double fraction, unsigned seed) {
+  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0, fraction * diagonal);
+  for (Eigen::Index v = 0; v < region.vertices.rows(); ++v)
+    for (int c = 0; c < 3; ++c) region.vertices(v, c) += noise(rng);
 }
 
 }  // namespace holefill::testregions
