@@ -253,6 +253,33 @@ TEST(LabeledParameterization, NoisyStraightSidesOfAUSlotAreNotReadAsReflexTurns)
   EXPECT_LT(p.arapEnergy, 0.01);
 }
 
+// The same noisy U-slot labeled by four convex corners as the corpus's corner-angle rule picks
+// them: North is the right leg's end, West runs from there down into the slot, round it, over the
+// left leg's end and down the left side. Developed edge by edge from the angle sums, East read as
+// a notch under the noise and 89 of its vertices were left free; West's outer leg was lost, the
+// rectangle came out 10 × 20 and ARAP folded (corpus `plane_uslot_n0p2_corners`, data max 0.11).
+// Developed by chords, West holds its outer leg only, and the map is the plane's own.
+TEST(LabeledParameterization, ANoisyUSlotLabeledByCornerAnglesHoldsTheOuterLegOfTheSideRoundTheSlot) {
+  Eigen::MatrixX2d truth;
+  TriangleMesh region = testregions::gridRegion(
+      100, 100, 0.01, [](double x, double y) { return !(x > 0.35 && x < 0.65 && y > 0.3); },
+      [](double x, double y) { return Eigen::Vector3d(10 * x, 10 * y, 0); }, truth);
+  testregions::addNoise(region, 0.002, 5);
+  const LabeledParameterization p = parameterizeLabeled(
+      region, testregions::cornerLabels(region, truth, {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 1), Eigen::Vector2d(0.65, 1)}));
+  std::map<std::string, int> left;
+  for (const auto& w : p.warnings)
+    for (const char* side : {"South", "East", "North", "West"})
+      if (w.find(std::string(" of the ") + side + " side lie inside") != std::string::npos) left[side] = std::stoi(w);
+  EXPECT_LE(left["East"], 2);
+  EXPECT_LE(left["South"], 2);
+  EXPECT_GE(left["West"], 150);  // all but the outer leg's hundred
+  EXPECT_EQ(p.flippedTriangles, 0);
+  EXPECT_LT(p.arapEnergy, 0.01);
+  EXPECT_NEAR(p.width, 10, 0.5);
+  EXPECT_NEAR(p.height, 10, 0.5);
+}
+
 // An L-shape cut from a cone (developable: a map without distortion exists) whose ARAP rounds end
 // with triangles turned over where the stretch left free meets a held side: the map is relaxed by
 // the fold-free descent instead, and no triangle is left folded (before: 2 slivers kept folded).
