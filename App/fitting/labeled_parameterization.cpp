@@ -59,12 +59,6 @@ double signedArea(const Eigen::MatrixX2d& uv, const Eigen::Vector3i& t) {
   return 0.5 * (a.x() * b.y() - a.y() * b.x());
 }
 
-// A labeled side is meant to lie on a side of the rectangle, which the map makes straight. Its
-// vertices that lie deeper than `depth` × its chord inside the line supporting it are a notch,
-// slot or concave arc the side runs round, or a rounded corner: held on the side, they make the
-// map singular there (measured: mean curvature 864 against the truth's 0.17 where an arc was
-// straightened onto two sides), and the rectangle never reaches past them. They are taken off the
-// side (left free, for the extension to continue the surface into), unless fewer than two would
 // A labeled side developed into the plane, from its first vertex (at the origin, heading along +x)
 // to its last; one point per vertex of `sp` (positions in `loop`). The side is cut into chords of
 // 2% of its length (at least four edges); each turns from the one before by their angle seen
@@ -125,6 +119,12 @@ std::vector<Eigen::Vector2d> developedSide(const Eigen::MatrixX3d& X, const Eige
   return at;
 }
 
+// A labeled side is meant to lie on a side of the rectangle, which the map makes straight. Its
+// vertices that lie deeper than `depth` × its chord inside the line supporting it are a notch,
+// slot or concave arc the side runs round, or a rounded corner: held on the side, they make the
+// map singular there (measured: mean curvature 864 against the truth's 0.17 where an arc was
+// straightened onto two sides), and the rectangle never reaches past them. They are taken off the
+// side (left free, for the extension to continue the surface into), unless fewer than two would
 // remain. Depth is measured on the side developed into the plane (developedSide): a side that
 // bends with the surface (an arc round a cone) is not mistaken for one that turns within it.
 // Returns the number taken off per side; sidePerimeter keeps the others, in order.

@@ -45,6 +45,25 @@ std::vector<LabeledSegment> sides(int nx, int ny, std::vector<Side> which) {
   return out;
 }
 
+// A 10 × 10 plane less a slot (x in (0.35, 0.65) above y = 0.3, open at the top), 100 × 100 grid
+// cells, with scan noise of 0.2% of the diagonal (the corpus's plane_uslot_n0p2 at its density).
+TriangleMesh noisyPlaneUSlot(unsigned seed, Eigen::MatrixX2d& truth) {
+  TriangleMesh region = testregions::gridRegion(
+      100, 100, 0.01, [](double x, double y) { return !(x > 0.35 && x < 0.65 && y > 0.3); },
+      [](double x, double y) { return Eigen::Vector3d(10 * x, 10 * y, 0); }, truth);
+  testregions::addNoise(region, 0.002, seed);
+  return region;
+}
+
+// Vertices left free per side, from the warnings ("N vertices of the South side lie inside ...").
+std::map<std::string, int> leftFreePerSide(const LabeledParameterization& p) {
+  std::map<std::string, int> left;
+  for (const auto& w : p.warnings)
+    for (const char* side : {"South", "East", "North", "West"})
+      if (w.find(std::string(" of the ") + side + " side lie inside") != std::string::npos) left[side] = std::stoi(w);
+  return left;
+}
+
 }  // namespace
 
 TEST(LabeledParameterization, AFlatLabeledRectangleMapsOntoItselfAndLabelsLandOnTheirSides) {
@@ -235,16 +254,9 @@ TEST(LabeledParameterization, AnLLabeledByCornerAnglesHoldsOneLegOfTheReflexSide
 // West were left free before; the boundary's density matters, 80 × 80 cells showed none).
 TEST(LabeledParameterization, NoisyStraightSidesOfAUSlotAreNotReadAsReflexTurns) {
   Eigen::MatrixX2d truth;
-  TriangleMesh region = testregions::gridRegion(
-      100, 100, 0.01, [](double x, double y) { return !(x > 0.35 && x < 0.65 && y > 0.3); },
-      [](double x, double y) { return Eigen::Vector3d(10 * x, 10 * y, 0); }, truth);
-  testregions::addNoise(region, 0.002, 3);
+  const TriangleMesh region = noisyPlaneUSlot(3, truth);
   const LabeledParameterization p = parameterizeLabeled(region, testregions::boundingBoxLabels(region, truth));
-  // Left free per side, from the warnings ("N vertices of the South side lie inside ...").
-  std::map<std::string, int> left;
-  for (const auto& w : p.warnings)
-    for (const char* side : {"South", "East", "North", "West"})
-      if (w.find(std::string(" of the ") + side + " side lie inside") != std::string::npos) left[side] = std::stoi(w);
+  std::map<std::string, int> left = leftFreePerSide(p);
   // A vertex at a side's end may leave the side's line under the noise (its direction is taken
   // over half the window there); a stretch must not.
   for (const char* side : {"South", "East", "West"}) EXPECT_LE(left[side], 2) << side;
@@ -261,16 +273,10 @@ TEST(LabeledParameterization, NoisyStraightSidesOfAUSlotAreNotReadAsReflexTurns)
 // Developed by chords, West holds its outer leg only, and the map is the plane's own.
 TEST(LabeledParameterization, ANoisyUSlotLabeledByCornerAnglesHoldsTheOuterLegOfTheSideRoundTheSlot) {
   Eigen::MatrixX2d truth;
-  TriangleMesh region = testregions::gridRegion(
-      100, 100, 0.01, [](double x, double y) { return !(x > 0.35 && x < 0.65 && y > 0.3); },
-      [](double x, double y) { return Eigen::Vector3d(10 * x, 10 * y, 0); }, truth);
-  testregions::addNoise(region, 0.002, 5);
+  const TriangleMesh region = noisyPlaneUSlot(5, truth);
   const LabeledParameterization p = parameterizeLabeled(
       region, testregions::cornerLabels(region, truth, {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 1), Eigen::Vector2d(0.65, 1)}));
-  std::map<std::string, int> left;
-  for (const auto& w : p.warnings)
-    for (const char* side : {"South", "East", "North", "West"})
-      if (w.find(std::string(" of the ") + side + " side lie inside") != std::string::npos) left[side] = std::stoi(w);
+  std::map<std::string, int> left = leftFreePerSide(p);
   EXPECT_LE(left["East"], 2);
   EXPECT_LE(left["South"], 2);
   EXPECT_GE(left["West"], 150);  // all but the outer leg's hundred
