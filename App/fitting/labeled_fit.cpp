@@ -8,6 +8,7 @@
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
 #include "geometry/json_writer.h"
+#include "fitting/residual_bias.h"
 
 namespace holefill {
 
@@ -107,25 +108,37 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
       r.warnings.push_back(why);
     }
   }
-  auto describe = [](const TensorFitOptions& f, const TensorFitResult& t) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%dx%d: data max %.2e, rms %.2e, %d weak, log10 condition %.1f", f.controlU, f.controlV, t.dataMax,
-                  t.dataRms, t.weakControlPoints, t.log10Condition);
-    return std::string(line);
-  };
-  r.refinements.push_back(describe(fo, r.fit));
-  // Refined while the data max exceeds the tolerance, unless what is left is noise: a fit whose
-  // data rms is within 1.5 σ of the scan noise (mesh/scan_noise.h) leaves at most 1.1 σ of model
-  // error, and more control points would follow the noise (Morozov's discrepancy principle). A
-  // clean region is refined as long as the max falls: its misses are local (a horn, a reflex
-  // corner) and hardly move the rms, which the earlier rule (stop unless the rms falls by a third)
-  // read as noise.
   const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
   r.noise = diagonal > 0 ? p.noise.sigma / diagonal : 0;
+  const Eigen::MatrixX3d normals = vertexNormals(region);
+  const auto biasOf = [&](const TensorFitResult& f) {
+    Eigen::VectorXd residual(region.vertices.rows());
+    for (Eigen::Index i = 0; i < residual.size(); ++i)
+      residual(i) = normals.row(i).dot(f.surface.point(f.regionUV(i, 0), f.regionUV(i, 1)).transpose() - region.vertices.row(i));
+    ResidualBias b = residualBias(region, residual);
+    b.max = diagonal > 0 ? b.max / diagonal : 0;
+    return b;
+  };
+  auto describe = [](const TensorFitOptions& f, const TensorFitResult& t, const ResidualBias& b) {
+    char line[200];
+    std::snprintf(line, sizeof line, "%dx%d: data max %.2e, rms %.2e, bias %.2e, %d weak, log10 condition %.1f", f.controlU, f.controlV,
+                  t.dataMax, t.dataRms, b.max, t.weakControlPoints, t.log10Condition);
+    return std::string(line);
+  };
+  ResidualBias bias = biasOf(r.fit);
+  r.refinements.push_back(describe(fo, r.fit, bias));
+  // Refined while the data max exceeds the tolerance, unless what is left is noise: the data rms
+  // within 1.5 σ of the scan noise (mesh/scan_noise.h; more control points would follow the
+  // noise, Morozov's discrepancy principle) and no neighbourhood of the region's vertices off the
+  // surface by more than σ on average (fitting/residual_bias.h: where the fit cuts a bump off,
+  // the rms stays near σ and the neighbourhood's mean does not). A clean region is refined as
+  // long as the max falls: its misses are local (a horn, a reflex corner) and hardly move the
+  // rms, which the earlier rule (stop unless the rms falls by a third) read as noise.
   while (o.maxControl > 0 && r.fit.dataMax > o.tolerance) {
-    if (r.fit.dataRms <= 1.5 * r.noise) {
-      char line[160];
-      std::snprintf(line, sizeof line, "stopped: the data rms is within 1.5 times the scan noise (%.2e of the diagonal)", r.noise);
+    if (r.fit.dataRms <= 1.5 * r.noise && bias.max <= r.noise) {
+      char line[200];
+      std::snprintf(line, sizeof line, "stopped: what is left is scan noise (rms within 1.5 σ, no neighbourhood off by σ; σ %.2e of the diagonal)",
+                    r.noise);
       r.refinements.push_back(line);
       break;
     }
@@ -137,18 +150,22 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
       break;
     }
     TensorFitResult t = fitWith(next);
-    r.refinements.push_back(describe(next, t));
+    const ResidualBias tb = biasOf(t);
+    r.refinements.push_back(describe(next, t, tb));
     if (t.weakControlPoints > r.fit.weakControlPoints || !(t.log10Condition < 8)) {
       r.refinements.push_back("stopped: weak control points or ill-conditioned; the previous kept");
       break;
     }
-    if (!(t.dataMax < r.fit.dataMax) && !(t.dataRms < r.fit.dataRms * (2.0 / 3.0))) {
-      r.refinements.push_back("stopped: neither the data max nor the rms fell; the previous kept");
+    // Under noise the max is the noise's and stays; the bias falls where the fit was short.
+    if (!(t.dataMax < r.fit.dataMax) && !(t.dataRms < r.fit.dataRms * (2.0 / 3.0)) && !(tb.max < bias.max * (2.0 / 3.0))) {
+      r.refinements.push_back("stopped: neither the data max, the rms nor the bias fell; the previous kept");
       break;
     }
     r.fit = std::move(t);
+    bias = tb;
     fo = next;
   }
+  r.dataBias = bias.max;
   r.metTolerance = r.fit.dataMax <= std::max(o.tolerance, 5 * r.noise);
   if (!r.metTolerance) {
     char line[240];
@@ -196,6 +213,7 @@ std::string LabeledFitResult::toJson() const {
       .field("weak_control_points", fit.weakControlPoints)
       .field("log10_condition", fit.log10Condition)
       .field("parameter_corrections", fit.correctionRounds)
+      .field("data_bias", dataBias)
       .field("noise_estimate", noise)
       .field("met_tolerance", metTolerance)
       .field("face_valid", fit.valid)

@@ -35,11 +35,13 @@ struct LabeledFitOptions {
   // Control points chosen by the data: from the larger of fit.controlU and fit.controlV along the
   // rectangle's longer side and as many as keep the cells square along the other (4 at least),
   // refined by half again per
-  // direction while the region's data max exceeds `tolerance` (of its diagonal) and its data RMS
-  // exceeds 1.5 times the region's scan noise (what is left is then noise, which more control
-  // points would follow), up to maxControl per direction. A refinement is undone, and ends the
-  // search, when it brings weak control points or a condition of 1e8 or more, or lowers neither
-  // the data max nor (by a third) the RMS. maxControl 0: exactly fit.controlU × controlV.
+  // direction while the region's data max exceeds `tolerance` (of its diagonal) and what is left
+  // is more than noise (which more control points would follow): the data RMS above 1.5 times
+  // the region's scan noise σ, or a neighbourhood of vertices off the surface by more than σ on
+  // average (fitting/residual_bias.h), up to maxControl per direction. A refinement is undone,
+  // and ends the search, when it brings weak control points or a condition of 1e8 or more, or
+  // lowers neither the data max nor (by a third) the RMS or the bias. maxControl 0: exactly
+  // fit.controlU × controlV.
   double tolerance = 1e-3;
   int maxControl = 40;
 };
@@ -50,6 +52,7 @@ struct LabeledFitResult {
   TensorFitResult fit;
   std::vector<std::string> refinements;  // control points tried, with their data max, and why the search stopped
   double noise = 0;                      // the region's scan noise σ (mesh/scan_noise.h) / its diagonal
+  double dataBias = 0;                   // the fit's residual bias (fitting/residual_bias.h) / the region's diagonal
   // The data max within the tolerance, or within 5 σ of the scan noise (the largest of 20,000
   // normal deviates is about 4.4 σ): what a fit that follows the surface leaves. Otherwise a
   // warning says by how much it misses, and the CLI exits 3.

@@ -3,6 +3,7 @@
 #include "fitting/labeled_fit.h"
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
+#include "geometry/surface_projection.h"
 #include "mesh/mesh_holes.h"
 #include "test_regions.h"
 
@@ -281,6 +282,7 @@ TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
   EXPECT_NEAR(noisy.noise, 0.002, 0.0003);
   EXPECT_NE(noisy.refinements.back().find("scan noise"), std::string::npos) << noisy.refinements.back();
   EXPECT_LE(noisy.fit.dataRms, 1.5 * noisy.noise);
+  EXPECT_LE(noisy.dataBias, noisy.noise);
   for (const std::string& line : clean.refinements) std::printf("  clean: %s\n", line.c_str());
   // Clean, the misses are local (the bite's ends) and hardly move the rms, where an earlier rule
   // stopped, reading them as noise: refined on while the max falls (5x5 → 8x8 → 12x12 reaches
@@ -288,6 +290,44 @@ TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
   EXPECT_GE(clean.fit.surface.numU(), 12);
   EXPECT_LT(clean.fit.dataMax, 1.6e-3);
   EXPECT_GT(clean.fit.surface.numU() * clean.fit.surface.numV(), noisy.fit.surface.numU() * noisy.fit.surface.numV());
+}
+
+// A local miss under noise is not noise: a plane with a narrow bump (0.05 high, σ 0.1 wide, about
+// 1% of the region's area) and 0.05% scan noise. At 12 × 12 the data RMS is 1.2 σ, where the
+// discrepancy principle alone stopped, while the surface cuts the bump off by 10 σ; the
+// residual's bias over neighbourhoods (fitting/residual_bias.h) sees the miss and refines on
+// until the fit is within 3 σ of the noise-free truth.
+TEST(LabeledFit, ALocalMissUnderNoiseIsRefinedPastTheDataRms) {
+  Eigen::MatrixX2d uv;
+  const auto height = [](double u, double v) { return 0.05 * std::exp(-(std::pow(u - 2.7, 2) + std::pow(v - 1.1, 2)) / (2 * 0.1 * 0.1)); };
+  const TriangleMesh truth = testregions::gridRegion(80, 40, 0.05, [](double, double) { return true; },
+                                                     [&](double u, double v) { return Eigen::Vector3d(u, v, height(u, v)); }, uv);
+  TriangleMesh region = truth;
+  testregions::addNoise(region, 0.0005, 5);
+  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, uv);
+  const double diagonal = boundingDiagonal(truth.vertices);
+  const auto truthMiss = [&](const LabeledFitResult& r) {
+    double worst = 0;
+    for (Eigen::Index i = 0; i < truth.vertices.rows(); ++i) {
+      Eigen::Vector2d at = r.fit.regionUV.row(i).transpose();
+      worst = std::max(worst, projectPointFrom(r.fit.surface, truth.vertices.row(i).transpose(), at) / diagonal);
+    }
+    return worst;
+  };
+  LabeledFitOptions o;
+  o.maxControl = 0;
+  const LabeledFitResult fixed = fitLabeled(region, labels, o);
+  o.maxControl = 40;
+  const LabeledFitResult refined = fitLabeled(region, labels, o);
+  std::printf("bump under 0.05%% noise: %dx%d rms %.2e bias %.2e truth %.2e; refined %dx%d rms %.2e bias %.2e truth %.2e (σ %.2e)\n",
+              fixed.fit.surface.numU(), fixed.fit.surface.numV(), fixed.fit.dataRms, fixed.dataBias, truthMiss(fixed), refined.fit.surface.numU(), refined.fit.surface.numV(), refined.fit.dataRms,
+              refined.dataBias, truthMiss(refined), refined.noise);
+  EXPECT_LE(fixed.fit.dataRms, 1.5 * fixed.noise);
+  EXPECT_GT(fixed.dataBias, 2 * fixed.noise);
+  EXPECT_GT(truthMiss(fixed), 3 * 0.0005);
+  EXPECT_GT(refined.fit.surface.numU(), 12);
+  EXPECT_LE(refined.dataBias, refined.noise);
+  EXPECT_LT(truthMiss(refined), 3 * 0.0005);
 }
 
 // A fit that misses the data says so (the CLI exits 3 on it): 5x5 control points, no refinement,

@@ -1,0 +1,27 @@
+// The systematic part of a fit's residual on a noisy region. A fit's residual is the scan noise,
+// which is independent from vertex to vertex, plus the model error (too few control points, a
+// distorted map), which is alike between neighbours. Averaged over a vertex's neighbourhood of
+// `window` vertices the noise falls by √window and the model error stays: the largest such mean
+// is the model error a stopping rule must read. The data RMS cannot: a bump or horn the fit
+// cuts off holds a few percent of the vertices and hardly moves it (Morozov's discrepancy
+// principle, the data RMS within 1.5 σ, stopped 12 × 12 on a noisy B-spline ring whose fit then
+// missed the true surface by 5 σ). Used by labeled fitting's refinement (labeled_fit.h).
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "mesh/triangle_mesh.h"
+
+namespace holefill {
+
+struct ResidualBias {
+  double max = 0;  // the largest |mean signed residual| over a neighbourhood, the residual's units
+  int at = -1;     // the vertex whose neighbourhood it is
+};
+
+// `residual`: per vertex of `mesh`, the signed residual along the normal. A vertex's
+// neighbourhood: its rings taken whole until they hold `window` vertices (itself included), or
+// its whole component. Throws Error when the sizes disagree or window < 1.
+ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& residual, int window = 25);
+
+}  // namespace holefill
