@@ -32,9 +32,23 @@ bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
   const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
+
+double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d e = b - a;
+  const double t = e.squaredNorm() > 0 ? std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (a + t * e - p).norm();
+}
+
+// Whether the segments cross, or (touch ≥ 0) come within `touch` of each other: the closest
+// points of two segments that do not cross include an end of one of them.
+bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d, double touch) {
+  if (segmentsCross(a, b, c, d)) return true;
+  return touch >= 0 && std::min({pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d), pointSegmentDistance(c, a, b),
+                                 pointSegmentDistance(d, a, b)}) <= touch;
+}
 }  // namespace
 
-std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit) {
+std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit, double touch) {
   struct Span {
     double xmin, xmax, ymin, ymax;
     LoopEdge e;
@@ -49,7 +63,9 @@ std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polyg
     for (size_t k = 0; k < loops[l].size(); ++k) {
       const auto &a = loops[l][k], &b = loops[l][(k + 1) % loops[l].size()];
       if ((a - b).norm() <= 1e-14) continue;
-      spans.push_back({std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), {l, k}, ranks[l]++});
+      const double pad = std::max(touch, 0.0);
+      spans.push_back({std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad, std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad,
+                       {l, k}, ranks[l]++});
     }
   std::sort(spans.begin(), spans.end(), [](const Span& p, const Span& q) { return p.xmin < q.xmin; });
   auto ends = [&](const LoopEdge& e) {
@@ -66,12 +82,31 @@ std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polyg
       }
       const auto [a, b] = ends(spans[i].e);
       const auto [c, d] = ends(spans[j].e);
-      if (segmentsCross(a, b, c, d)) out.push_back({spans[i].e, spans[j].e});
+      if (segmentsMeet(a, b, c, d, touch)) out.push_back({spans[i].e, spans[j].e});
     }
   return out;
 }
 
 bool selfIntersects(const Polygon2& p) { return !crossingEdges({p}, 1).empty(); }
+
+Polygon2 withoutSelfContacts(Polygon2 loop, double touch) {
+  // Each contact is cut out by keeping the larger of the two loops it splits the loop into; a cut
+  // can bring its new edge into contact elsewhere, so the search runs again (each cut drops a
+  // vertex at least, and the loop keeps three).
+  while (loop.size() > 3) {
+    const auto meet = crossingEdges({loop}, 1, touch);
+    if (meet.empty()) break;
+    const size_t n = loop.size(), i = std::min(meet[0].first.edge, meet[0].second.edge), j = std::max(meet[0].first.edge, meet[0].second.edge);
+    // Edges i and j split the loop into the vertices i+1 … j and j+1 … i (round the end).
+    const Polygon2 inner(loop.begin() + static_cast<std::ptrdiff_t>(i) + 1, loop.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+    Polygon2 outer(loop.begin() + static_cast<std::ptrdiff_t>(j) + 1, loop.end());
+    outer.insert(outer.end(), loop.begin(), loop.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    Polygon2 kept = std::abs(signedArea(inner)) > std::abs(signedArea(outer)) ? inner : outer;
+    if (kept.size() < 3 || kept.size() >= n) break;
+    loop = std::move(kept);
+  }
+  return loop;
+}
 
 bool loopsCross(const Polygon2& p, const Polygon2& q) {
   for (const auto& [e, f] : crossingEdges({p, q}))

@@ -22,11 +22,17 @@ struct LoopEdge {
 };
 // The pairs of edges that cross properly (their interiors meet at one point), within a loop and
 // between loops, up to `limit` pairs; edges that only touch, zero-length edges and adjacent
-// edges do not count. A sweep over the edges' x extents: loops of tens of thousands of edges (a
-// large hole's boundary) are checked in about n log n.
-std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit = SIZE_MAX);
+// edges do not count, unless `touch` ≥ 0: then edges within `touch` of each other count too
+// (a vertex on another edge, collinear edges overlapping). A sweep over the edges' x extents:
+// loops of tens of thousands of edges (a large hole's boundary) are checked in about n log n.
+std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit = SIZE_MAX, double touch = -1);
 // True when two edges of the polygon cross.
 bool selfIntersects(const Polygon2& poly);
+// The loop with no two edges within `touch` of each other: where two meet (cross, or touch, as a
+// loop running back along a stretch of itself does) the smaller of the two loops they split it
+// into, by area, is cut off, the larger kept in order. A map folded at its boundary leaves such
+// contacts, which BRepCheck calls a self-intersecting wire; what is cut off is the fold.
+Polygon2 withoutSelfContacts(Polygon2 loop, double touch);
 // True when an edge of one polygon crosses an edge of the other.
 bool loopsCross(const Polygon2& p, const Polygon2& q);
 // Mean value coordinates of x (strictly inside) w.r.t. the polygon vertices; they sum to 1.

@@ -83,3 +83,29 @@ TEST(Polygon2d, CrossingEdgesOnALargeLoopFindsTheOneCrossing) {
   EXPECT_EQ(std::min(c[0].first.edge, c[0].second.edge), 4999u);
   EXPECT_EQ(std::max(c[0].first.edge, c[0].second.edge), 5001u);
 }
+
+// A loop that runs along the bottom of a square, turns up and back over its own stretch and then
+// below it (a map folded at a held side, as on the corpus's cone_blob_n0p2): no edge crosses
+// another properly, a vertex lies on an earlier edge, and the wire is self-intersecting. Counted
+// as a contact with `touch`, the fold is cut off and the square kept.
+TEST(Polygon2d, AFoldThatTouchesItsOwnStretchIsCutOff) {
+  const Polygon2 folded{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {2.9, 0.1}, {1.5, 0}, {2.5, -0.1}, {4, 0}, {4, 4}, {0, 4}};
+  EXPECT_FALSE(selfIntersects(folded));
+  EXPECT_FALSE(crossingEdges({folded}, SIZE_MAX, 1e-12).empty());
+  const Polygon2 clean = withoutSelfContacts(folded, 1e-12);
+  EXPECT_TRUE(crossingEdges({clean}, SIZE_MAX, 1e-12).empty());
+  EXPECT_GT(signedArea(clean), 15.5);
+  EXPECT_LE(clean.size(), folded.size() - 3);
+  for (const Eigen::Vector2d& corner : {Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 4), Eigen::Vector2d(0, 4)})
+    EXPECT_NE(std::find(clean.begin(), clean.end(), corner), clean.end());
+  // A simple loop comes back unchanged, whatever its orientation.
+  const Polygon2 square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_EQ(withoutSelfContacts(square, 1e-12), square);
+  const Polygon2 clockwise(square.rbegin(), square.rend());
+  EXPECT_EQ(withoutSelfContacts(clockwise, 1e-12), clockwise);
+  // A figure eight keeps its larger lobe.
+  const Polygon2 eight{{0, 0}, {2, 2}, {2, 0}, {0, 2}, {-3, 2}, {-3, 0}};
+  const Polygon2 lobe = withoutSelfContacts(eight, 0);
+  EXPECT_FALSE(selfIntersects(lobe));
+  EXPECT_GT(std::abs(signedArea(lobe)), 4);
+}
