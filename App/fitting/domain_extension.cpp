@@ -58,6 +58,8 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   if (uv.rows() != nv) throw Error("the parameterization has " + std::to_string(uv.rows()) + " points for " + std::to_string(nv) + " vertices");
   if (!uv.allFinite()) throw Error("the parameterization has a non-finite point");
   if (o.order != 2 && o.order != 3) throw Error("the extension order must be 2 (G1) or 3 (G2)");
+  if (!(o.spacing >= 0 && o.clearance >= 0 && std::isfinite(o.spacing) && std::isfinite(o.clearance)))
+    throw Error("the extension's grid spacing and clearance must be zero (automatic) or positive");
   if (!(width > 0 && height > 0)) throw Error("the domain rectangle has no area");
   const MeshTopology topo(region);
   const MeshHoleReport holes = findMeshHoles(region, topo);
@@ -82,7 +84,7 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   out.u1 = std::max(width + m, uv.col(0).maxCoeff());
   out.v1 = std::max(height + m, uv.col(1).maxCoeff());
 
-  // Grid samples outside the footprint, kept half a spacing from its boundary (no slivers), over
+  // Grid samples outside the footprint, kept `clearance` from its boundary (no slivers), over
   // the rectangle and `pad` layers beyond it. The extension is solved on the padded grid and then
   // cropped to the rectangle: the region's labeled sides lie on the rectangle's rim, and solved
   // there, the new vertices next to them would have no whole stencil (a one-sided Laplacian is
@@ -95,8 +97,10 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   if (const double nodes = (out.u1 - out.u0) * (out.v1 - out.v0) / (h * h), most = 16.0 * nv + 10000; nodes > most)
     h *= std::sqrt(nodes / most);
   const int pad = o.order + 1;
+  const double clearance = o.clearance > 0 ? o.clearance : 0.5 * h;
   const int cu = std::max(1, static_cast<int>(std::ceil((out.u1 - out.u0) / h))), cv = std::max(1, static_cast<int>(std::ceil((out.v1 - out.v0) / h)));
   const double hu = (out.u1 - out.u0) / cu, hv = (out.v1 - out.v0) / cv;
+  out.spacing = std::max(hu, hv);
   std::vector<Eigen::Vector2d> fresh;
   std::map<std::pair<int, int>, int> freshAt;  // grid (i, j) → index into fresh
   for (int i = -pad; i <= cu + pad; ++i)
@@ -105,7 +109,7 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       if (winding(loops, q) != 0) continue;
       bool near = false;
       for (const auto& loop : loops)
-        for (size_t k = 0; k < loop.size() && !near; ++k) near = segmentDistance(q, loop[k], loop[(k + 1) % loop.size()]) < 0.5 * h;
+        for (size_t k = 0; k < loop.size() && !near; ++k) near = segmentDistance(q, loop[k], loop[(k + 1) % loop.size()]) < clearance;
       if (!near) {
         freshAt[{i, j}] = static_cast<int>(fresh.size());
         fresh.push_back(q);

@@ -24,6 +24,10 @@ namespace holefill {
 struct DomainExtensionOptions {
   double spacing = 0;      // grid spacing in the domain; 0: the region's mean edge length in uv
   int marginLayers = 0;    // grid layers added around the rectangle
+  // Least distance of the new samples from the region's boundary in the domain; 0: half the
+  // spacing (no slivers). A grid finer than the region's edges keeps the first grid's clearance:
+  // samples closer in sit where the region's own vertices already decide the surface.
+  double clearance = 0;
   int order = 3;           // k of Δᵏx = 0: 2 (G1) or 3 (G2)
   double fairness = 1e-2;  // weight of the (k+1)-th differences along the new grid lines, relative to Δᵏ's
   // The paper's isocurve fairness instead (sec. 5.2.2.1): k-th differences along the extension's
@@ -48,6 +52,7 @@ struct DomainExtension {
   Eigen::MatrixX2d uv;           // per vertex of `mesh`
   int regionVertices = 0, regionTriangles = 0;
   double u0 = 0, v0 = 0, u1 = 0, v1 = 0;  // the extended domain
+  double spacing = 0;                     // of the new samples' grid (the larger of its two steps)
 };
 
 // `uv` per region vertex (e.g. LabeledParameterization::uv), inside [0, width] × [0, height]

@@ -126,17 +126,20 @@ struct PoleSolve {
 };
 
 PoleSolve solvePoles(const BSplineSurface& s, const Eigen::SparseMatrix<double>& fairness, const Eigen::MatrixX3d& points,
-                     const Eigen::MatrixX2d& uv, const TensorFitOptions& o) {
+                     const Eigen::MatrixX2d& uv, Eigen::Index regionRows, const TensorFitOptions& o) {
   const int n = o.controlU * o.controlV;
   std::vector<Eigen::Triplet<double>> T;
   std::vector<int> support(n, 0);
+  const double extra = std::sqrt(o.extraWeight);  // on the rows past the region's, of B and of the points alike
+  Eigen::VectorXd rowWeight = Eigen::VectorXd::Ones(points.rows());
+  rowWeight.tail(points.rows() - std::min(regionRows, points.rows())).setConstant(extra);
   for (Eigen::Index k = 0; k < points.rows(); ++k) {
     const int su = findSpan(s.knotsU, 3, uv(k, 0)), sv = findSpan(s.knotsV, 3, uv(k, 1));
     const Eigen::MatrixXd Bu = basisDerivatives(s.knotsU, 3, su, uv(k, 0), 0), Bv = basisDerivatives(s.knotsV, 3, sv, uv(k, 1), 0);
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
         const int pole = (su - 3 + a) * o.controlV + (sv - 3 + b);
-        T.emplace_back(static_cast<int>(k), pole, Bu(0, a) * Bv(0, b));
+        T.emplace_back(static_cast<int>(k), pole, rowWeight(k) * Bu(0, a) * Bv(0, b));
         ++support[pole];
       }
   }
@@ -149,7 +152,7 @@ PoleSolve solvePoles(const BSplineSurface& s, const Eigen::SparseMatrix<double>&
   out.normal += o.smoothing * scale * fairness;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(out.normal);
   if (solver.info() != Eigen::Success) throw Error("the fitting system is singular: add smoothing or fewer control points");
-  out.poles = solver.solve(B.transpose() * points);
+  out.poles = solver.solve(B.transpose() * (rowWeight.asDiagonal() * points));
   if (!out.poles.allFinite()) throw Error("the fit failed (non-finite control points)");
   return out;
 }
@@ -167,6 +170,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   if (points.rows() != uv.rows() || region.vertices.rows() != regionUV.rows())
     throw Error("the fitted points and their parameters disagree in number");
   if (o.controlU < 4 || o.controlV < 4) throw Error("a cubic fit needs at least 4 control points in each direction");
+  if (!(o.extraWeight > 0 && std::isfinite(o.extraWeight))) throw Error("the weight of the points past the region's must be positive");
   if (!points.allFinite() || !uv.allFinite() || !regionUV.allFinite()) throw Error("the fitting input has a non-finite value");
   const bool given = o.u1 > o.u0 && o.v1 > o.v0;
   double u0 = uv.col(0).minCoeff(), u1 = uv.col(0).maxCoeff(), v0 = uv.col(1).minCoeff(), v1 = uv.col(1).maxCoeff();
@@ -198,7 +202,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   Eigen::MatrixX2d fitUV = uv;
   r.regionUV = regionUV;
   const Eigen::SparseMatrix<double> fairness = fairnessMatrix(3, s.knotsU, 3, s.knotsV, FairnessWeights{1.0, 0.0});
-  PoleSolve solved = solvePoles(s, fairness, points, fitUV, o);
+  PoleSolve solved = solvePoles(s, fairness, points, fitUV, nr, o);
   s.poles = solved.poles;
   std::tie(r.dataMax, r.dataRms) = dataError(s, r.regionUV);
   const MeshHoleReport holes = findMeshHoles(region);
@@ -237,7 +241,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
       Eigen::MatrixX2d nextFit = fitUV;
       nextFit.topRows(nr) = next;
       BSplineSurface trial = s;
-      PoleSolve again = solvePoles(trial, fairness, points, nextFit, o);
+      PoleSolve again = solvePoles(trial, fairness, points, nextFit, nr, o);
       trial.poles = again.poles;
       const auto [mx, rms] = dataError(trial, next);
       if (!(rms < r.dataRms)) break;

@@ -31,6 +31,11 @@ struct TensorFitOptions {
   // A fit of the region alone over its whole domain rectangle (the thin plate carries it past
   // the data) needs it.
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  // Weight of each point past the region's own (rows of `points` after the first
+  // region.vertices.rows(), e.g. an extension's samples) in the data term, against 1 for the
+  // region's. Samples on a grid finer than the region's edges weigh less, so that the extension
+  // pulls per unit of area as the region does (labeled_fit.h).
+  double extraWeight = 1;
 };
 
 struct TensorFitResult {

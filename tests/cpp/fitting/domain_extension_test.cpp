@@ -85,6 +85,33 @@ TEST(DomainExtension, RefusesMismatchedOrBadInput) {
   o.order = 4;
   EXPECT_THROW(extendToRectangle(region, uv, 4, 2, o), Error);
   EXPECT_THROW(extendToRectangle(region, uv, 0, 2), Error);
+  for (double bad : {-1.0, std::nan(""), HUGE_VAL}) {
+    DomainExtensionOptions g;
+    g.spacing = bad;
+    EXPECT_THROW(extendToRectangle(region, uv, 4, 2, g), Error);
+    g.spacing = 0;
+    g.clearance = bad;
+    EXPECT_THROW(extendToRectangle(region, uv, 4, 2, g), Error);
+  }
+  // The grid's spacing is reported; a clearance keeps the new samples that far from the region's
+  // boundary whatever the spacing.
+  DomainExtensionOptions fine;
+  fine.spacing = 0.05;
+  fine.continueSurface = false;
+  const DomainExtension e = extendToRectangle(region, uv, 4, 2, fine);
+  EXPECT_NEAR(e.spacing, 0.05, 0.005);
+  fine.clearance = 0.3;
+  const DomainExtension far = extendToRectangle(region, uv, 4, 2, fine);
+  EXPECT_LT(far.mesh.vertices.rows(), e.mesh.vertices.rows());
+  const MeshHoleReport holes = findMeshHoles(region);
+  for (Eigen::Index k = far.regionVertices; k < far.uv.rows(); ++k)
+    for (const MeshHole& h : holes.holes)
+      for (size_t j = 0; j < h.loop.size(); ++j) {
+        const Eigen::Vector2d a = uv.row(h.loop[j]).transpose(), b = uv.row(h.loop[(j + 1) % h.loop.size()]).transpose(),
+                              q = far.uv.row(k).transpose();
+        const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+        ASSERT_GE((a + t * (b - a) - q).norm(), 0.3 - 1e-12);
+      }
 }
 
 namespace {

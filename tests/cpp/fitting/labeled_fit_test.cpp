@@ -420,3 +420,29 @@ TEST(LabeledFit, ZZExperiment) {
     std::printf("seed %d bite %.1f: warnings %zu max %.2e weak %d cond %.1f %dx%d\n", seed, bite, r.warnings.size(), r.fit.dataMax, r.fit.weakControlPoints, r.fit.log10Condition, r.fit.surface.numU(), r.fit.surface.numV());
   }
 }
+
+// A coarse region (a 16 × 16 grid, a corner bitten off) of a field that wants more control points:
+// the extension's grid starts as coarse as the region's edges, and refined past it, the cells at
+// the rim held few samples, on the grid's lines, and the data's normal matrix was singular there
+// (the corpus's bspline_notch_n0p05 at 27 × 27). The extension is rebuilt finer with the control net.
+TEST(LabeledFit, TheExtensionsGridIsRefinedWithTheControlNet) {
+  Eigen::MatrixX2d uv;
+  const TriangleMesh region = testregions::gridRegion(
+      16, 16, 1.0 / 16, [](double u, double v) { return std::hypot(u - 1, v - 1) > 0.45; },
+      [](double u, double v) { return Eigen::Vector3d(u, v, 0.15 * std::sin(5 * u) * std::cos(4 * v) + 0.1 * std::sin(7 * v + u)); }, uv);
+  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, uv);
+  LabeledFitOptions o;
+  o.maxControl = 40;
+  const LabeledFitResult r = fitLabeled(region, labels, o);
+  for (const std::string& line : r.refinements) std::printf("  %s\n", line.c_str());
+  ASSERT_GT(r.extension.mesh.vertices.rows(), region.vertices.rows());
+  const BSplineSurface& s = r.fit.surface;
+  const double span = std::min((s.knotsU.back() - s.knotsU.front()) / (s.numU() - 3), (s.knotsV.back() - s.knotsV.front()) / (s.numV() - 3));
+  std::printf("%dx%d, knot span %.4f, extension spacing %.4f, %lld new samples\n", s.numU(), s.numV(), span, r.extension.spacing,
+              static_cast<long long>(r.extension.mesh.vertices.rows() - region.vertices.rows()));
+  EXPECT_GT(r.refinements.size(), 1u);
+  EXPECT_LT(r.extension.spacing, 0.5 / 16);  // the region's edges are 1/16
+  EXPECT_LE(r.extension.spacing, 0.5 * span);
+  EXPECT_EQ(r.fit.weakControlPoints, 0);
+  EXPECT_LT(r.fit.log10Condition, 8);
+}

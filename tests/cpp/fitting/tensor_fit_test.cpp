@@ -110,6 +110,48 @@ TEST(TensorFit, RefusesBadInput) {
   Eigen::MatrixX3d bad = whole.vertices;
   bad(4, 2) = std::nan("");
   EXPECT_THROW(fitTensorProduct(bad, uv, whole, uv), Error);
+  for (double w : {0.0, -1.0, std::nan("")}) {
+    TensorFitOptions weighted;
+    weighted.extraWeight = w;
+    EXPECT_THROW(fitTensorProduct(whole.vertices, uv, whole, uv, weighted), Error);
+  }
+}
+
+// The points past the region's own weigh extraWeight each: extra points lifted off the truth pull
+// the fit off the region's data the more the more they weigh, and at a light weight hardly at all.
+TEST(TensorFit, ThePointsPastTheRegionsWeighAsAsked) {
+  const BSplineSurface t = truth();
+  Eigen::MatrixX2d uv;
+  const auto inside = [](double u, double) { return u < 2.5; };
+  const TriangleMesh part = region(t, inside, uv);
+  Eigen::MatrixX2d whole;
+  const TriangleMesh all = region(t, [](double, double) { return true; }, whole);
+  // The extra points: the rest of the rectangle, lifted 0.05 along z.
+  std::vector<Eigen::Index> rest;
+  for (Eigen::Index k = 0; k < whole.rows(); ++k)
+    if (whole(k, 0) > 2.5 + 1e-9) rest.push_back(k);
+  Eigen::MatrixX3d points(part.vertices.rows() + static_cast<Eigen::Index>(rest.size()), 3);
+  Eigen::MatrixX2d params(points.rows(), 2);
+  points.topRows(part.vertices.rows()) = part.vertices;
+  params.topRows(part.vertices.rows()) = uv;
+  for (size_t k = 0; k < rest.size(); ++k) {
+    const Eigen::Index row = part.vertices.rows() + static_cast<Eigen::Index>(k);
+    points.row(row) = all.vertices.row(rest[k]) + Eigen::RowVector3d(0, 0, 0.05);
+    params.row(row) = whole.row(rest[k]);
+  }
+  TensorFitOptions o;
+  o.controlU = 7, o.controlV = 5;
+  double last = 0;
+  for (double w : {1e-3, 1.0, 1e3}) {
+    o.extraWeight = w;
+    const TensorFitResult r = fitTensorProduct(points, params, part, uv, o);
+    const double lifted = r.surface.point(3.5, 1)(2) - t.point(3.5, 1)(2);
+    std::printf("extra weight %g: data max %.2e, the rest lifted %.4f\n", w, r.dataMax, lifted);
+    EXPECT_GT(r.dataMax, last);
+    last = r.dataMax;
+    if (w < 1) EXPECT_LT(r.dataMax, 1e-3);
+    EXPECT_NEAR(lifted, 0.05, 0.01);  // past the region the extra points decide, whatever they weigh
+  }
 }
 
 TEST(TensorFit, ARegionCutFromABicubicPatchIsRefittedInsideAndInTheBandWithItsExtension) {
