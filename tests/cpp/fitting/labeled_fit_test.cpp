@@ -401,25 +401,6 @@ TEST(LabeledFit, TheExtensionIsSampledAtEachRefinementsControlPoints) {
   EXPECT_EQ(r.fit.weakControlPoints, 0);
   EXPECT_LT(r.fit.log10Condition, 8);
 }
-TEST(LabeledFit, ZZExperiment) {
-  for (int seed : {2, 6}) for (double bite : {0.5}) {
-    std::mt19937 rng(seed);
-    std::normal_distribution<double> g(0, 1);
-    double a[4][4];
-    for (auto& row : a) for (double& x : row) x = g(rng);
-    Eigen::MatrixX2d uv;
-    const TriangleMesh region = testregions::gridRegion(
-        60, 60, 1.0 / 60, [&](double u, double v) { return std::hypot(u - 1, v - 1) > bite; },
-        [&](double u, double v) { double z = 0; for (int i = 0; i < 4; ++i) for (int j = 0; j < 4; ++j) z += 0.12 * a[i][j] * std::cos(i * 2.2 * u + 0.3 * i) * std::cos(j * 2.2 * v + 0.5 * j); return Eigen::Vector3d(u, v, z); }, uv);
-    const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, uv);
-    LabeledFitOptions o;
-    o.maxControl = 40;
-    const LabeledFitResult r = fitLabeled(region, labels, o);
-    for (auto& w : r.warnings) std::printf("   W %s\n", w.c_str());
-    for (auto& w : r.refinements) std::printf("   R %s\n", w.c_str());
-    std::printf("seed %d bite %.1f: warnings %zu max %.2e weak %d cond %.1f %dx%d\n", seed, bite, r.warnings.size(), r.fit.dataMax, r.fit.weakControlPoints, r.fit.log10Condition, r.fit.surface.numU(), r.fit.surface.numV());
-  }
-}
 
 // A coarse region (a 16 × 16 grid, a corner bitten off) of a field that wants more control points:
 // the extension's grid starts as coarse as the region's edges, and refined past it, the cells at
