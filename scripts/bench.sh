@@ -29,7 +29,7 @@
 #     after each continuity change) with the prepared hole kept, with a fresh fill each time, and
 #     FreeCAD Surface Filling's recompute, on every 23rd corpus hole. BENCH_ONLY=preview runs part 9 alone.
 # 10. tests/bench/bench_fit_corpus.py: labeled fitting (extension G2, G1, none) on the labeled-region
-#     corpus (tests/corpus/labeled_regions.py, 63 regions cut from known surfaces): crashes, refusals,
+#     corpus (tests/corpus/labeled_regions.py, 131 regions cut from nine known surfaces and a real scan): crashes, refusals,
 #     faces, folded maps, data goal, weak control points, condition, by shape and noise; then
 #     tests/bench/bench_fitting.cpp --corpus: ours against the least-squares anchors on the same
 #     regions, judged against the truth (data max, band deviation). BENCH_ONLY=fit-corpus runs part 10 alone.

@@ -5,7 +5,7 @@ the method, cut from known surfaces, meshed irregularly, with noise, in both ori
 Each region is a shape in the unit parameter square (a convex blob, an L, a U-slot, a notch, a
 crescent, a square with a corner bitten off by a concave arc, a 10:1 strip, a square with an inner
 hole) mapped onto a surface (plane, cylinder, cone, sphere, torus, saddle, Gaussian bumps, a random
-B-spline height field) and triangulated irregularly (Delaunay of jittered interior points and
+B-spline height field, a steep field of random cosines) and triangulated irregularly (Delaunay of jittered interior points and
 boundary points at the same spacing), with 2,000 to 20,000 vertices. Noise is Gaussian, 0, 0.05%
 or 0.2% of the region's diagonal; half the regions have their triangles turned clockwise seen from
 the surface normal. Labels follow one rule (issue 21): the four corners are the outer boundary
@@ -47,6 +47,21 @@ def bspline_field(seed):
     return lambda u, v: np.stack([10 * u, 10 * v, spline.ev(u, v)], -1)
 
 
+def waves_field(seed):
+    """A steep wavy height field: cosines of random amplitudes, about one period across, slopes
+    near 1 (twice the B-spline fields'): straight parameter lines turn along the surface here."""
+    rng = np.random.default_rng(2000 + seed)
+    a = rng.normal(0, 1, (4, 4))
+
+    def f(u, v):
+        z = np.zeros_like(np.asarray(u, float))
+        for i in range(4):
+            for j in range(4):
+                z = z + 1.2 * a[i, j] * np.cos(2.2 * i * u + 0.3 * i) * np.cos(2.2 * j * v + 0.5 * j)
+        return np.stack([10 * u, 10 * v, z], -1)
+    return f
+
+
 SURFACES = {
     "plane": lambda u, v: np.stack([10 * u, 10 * v * 0.8, 0.3 * (10 * u) + 0.1 * (10 * v)], -1),
     "cylinder": lambda u, v: np.stack([3 * np.cos(np.pi * u), 3 * np.sin(np.pi * u), 10 * v], -1),
@@ -60,6 +75,7 @@ SURFACES = {
                                     - 1.0 * np.exp(-((u - .7) ** 2 + (v - .6) ** 2) / .03)
                                     + 0.8 * np.exp(-((u - .5) ** 2 + (v - .85) ** 2) / .01)], -1),
     "bspline": None,  # per region, seeded
+    "waves": None,  # per region, seeded
 }
 
 # --- shapes: outer loop (anticlockwise) and inner loops (clockwise), in [0, 1]^2 ---------------
@@ -263,7 +279,7 @@ def make_region(idx, surface, shape_name, noise, clockwise, target):
     remap = -np.ones(len(pts), int)
     remap[used] = np.arange(len(used))
     uv, tri = pts[used], remap[tri]
-    f = bspline_field(idx) if surface == "bspline" else SURFACES[surface]
+    f = bspline_field(idx) if surface == "bspline" else waves_field(idx) if surface == "waves" else SURFACES[surface]
     xyz = f(uv[:, 0], uv[:, 1])
     # The surface's normal side: the map's Jacobian orientation decides which way "anticlockwise in uv" faces.
     lo, hi = xyz.min(0), xyz.max(0)
