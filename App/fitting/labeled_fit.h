@@ -23,7 +23,9 @@ struct LabeledFitOptions {
   // Where the extension's new vertices get their places. SmoothFit (the default): a fit of the
   // region alone over the whole rectangle with thin plate `extensionSmoothing` (relative, as
   // TensorFitOptions::smoothing), at the control points of each fit the extension serves (so
-  // again at each refinement), sampled at the new vertices. Continuation: the paper's
+  // again at each refinement), sampled at the new vertices; once the control net's knot spans
+  // fall below twice the extension's grid spacing, the grid is rebuilt at a third of a span
+  // (keeping its first clearance from the region, each sample weighted by its area). Continuation: the paper's
   // polyharmonic continuation of the region's boundary rings at extension.order (G2: 3, G1: 2),
   // shaped by extension.fairness, meshFairness and paperIsocurves (which SmoothFit refuses:
   // they would change nothing). The continuation is a Cauchy problem: scan noise at the boundary
