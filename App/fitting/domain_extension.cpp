@@ -43,12 +43,6 @@ int winding(const std::vector<std::vector<Eigen::Vector2d>>& loops, const Eigen:
   return w;
 }
 
-double segmentDistance(const Eigen::Vector2d& q, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d d = b - a;
-  const double t = d.squaredNorm() > 0 ? std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (a + t * d - q).norm();
-}
-
 }  // namespace
 
 DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::MatrixX2d& uv, double width, double height,

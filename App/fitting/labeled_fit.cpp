@@ -22,7 +22,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
   const LabeledParameterization& p = r.parameterization;
   // The extension of the mapped (smoothed) region, the region's own vertices put back in it; its
-  // new vertices are placed when a fit is asked for (sampleExtension).
+  // new vertices are placed when a fit is asked for (sampleExtensionFor).
   const Eigen::Index nr = region.vertices.rows();
   const auto extendedAt = [&](const DomainExtensionOptions& eo) {
     DomainExtension e = extendToRectangle(TriangleMesh{p.mapped, region.triangles}, p.uv, p.width, p.height, eo);
@@ -46,16 +46,6 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   // sampled once from a coarse fit, a concave region's extension kept that fit's bias where the
   // finer fit bends (bspline_corner_clean: the extension given up, 1.3e-2 of the diagonal and 11
   // weak control points; sampled per fit: kept, 7.4e-4 and none).
-  const auto sampleExtension = [&](const TensorFitOptions& fo) {
-    if (!sampled || r.extension.mesh.vertices.rows() <= nr) return;
-    TensorFitOptions so = fo;
-    so.smoothing = o.extensionSmoothing;
-    so.parameterCorrections = 0;
-    so.u0 = r.extension.u0, so.u1 = r.extension.u1, so.v0 = r.extension.v0, so.v1 = r.extension.v1;
-    const BSplineSurface smooth = fitTensorProduct(region.vertices, p.uv, region, p.uv, so).surface;
-    for (Eigen::Index k = nr; k < r.extension.mesh.vertices.rows(); ++k)
-      r.extension.mesh.vertices.row(k) = smooth.point(r.extension.uv(k, 0), r.extension.uv(k, 1)).transpose();
-  };
   // The extension's grid is as fine as the region's edges; a refined control net outgrows it
   // (27 × 27 over a grid of 0.2 with knot spans of 0.38: the cells at the domain's rim held 4 to 7
   // samples on the grid's lines, and the data's normal matrix was singular there, bspline_notch_n0p05).
@@ -65,21 +55,28 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   // 1.5e-3 at the same 40 × 40. Each weighs as the area it stands for against the first grid's
   // samples, so that the extension pulls per unit of area as it did before the grid was refined.
   const double firstSpacing = r.extension.spacing;
-  const auto refineExtension = [&](const TensorFitOptions& fo) {
+  const auto sampleExtensionFor = [&](TensorFitOptions& fo) {
     if (!sampled || r.extension.mesh.vertices.rows() <= nr) return;
     const double span = std::min((r.extension.u1 - r.extension.u0) / (fo.controlU - 3), (r.extension.v1 - r.extension.v0) / (fo.controlV - 3));
-    if (r.extension.spacing <= 0.5 * span) return;
-    DomainExtensionOptions eo = o.extension;
-    eo.continueSurface = false;
-    eo.spacing = span / 3;
-    eo.clearance = 0.5 * firstSpacing;
-    r.extension = extendedAt(eo);
+    if (r.extension.spacing > 0.5 * span) {
+      DomainExtensionOptions eo = o.extension;
+      eo.continueSurface = false;
+      eo.spacing = span / 3;
+      eo.clearance = 0.5 * firstSpacing;
+      r.extension = extendedAt(eo);
+    }
+    TensorFitOptions so = fo;
+    so.smoothing = o.extensionSmoothing;
+    so.parameterCorrections = 0;
+    so.u0 = r.extension.u0, so.u1 = r.extension.u1, so.v0 = r.extension.v0, so.v1 = r.extension.v1;
+    const BSplineSurface smooth = fitTensorProduct(region.vertices, p.uv, region, p.uv, so).surface;
+    for (Eigen::Index k = nr; k < r.extension.mesh.vertices.rows(); ++k)
+      r.extension.mesh.vertices.row(k) = smooth.point(r.extension.uv(k, 0), r.extension.uv(k, 1)).transpose();
+    if (r.extension.spacing < firstSpacing) fo.extraWeight *= std::pow(r.extension.spacing / firstSpacing, 2);
   };
   auto fitWith = [&](TensorFitOptions fo) {
     if (!extended) return fitTensorProduct(region.vertices, p.uv, region, p.uv, fo);
-    refineExtension(fo);
-    sampleExtension(fo);
-    if (firstSpacing > 0 && r.extension.spacing < firstSpacing) fo.extraWeight *= std::pow(r.extension.spacing / firstSpacing, 2);
+    sampleExtensionFor(fo);
     return fitTensorProduct(r.extension.mesh.vertices, r.extension.uv, region, p.uv, fo);
   };
   TensorFitOptions fo = o.fit;

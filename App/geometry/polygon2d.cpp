@@ -33,20 +33,20 @@ bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
-double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d e = b - a;
-  const double t = e.squaredNorm() > 0 ? std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (a + t * e - p).norm();
-}
-
 // Whether the segments cross, or (touch ≥ 0) come within `touch` of each other: the closest
 // points of two segments that do not cross include an end of one of them.
 bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d, double touch) {
   if (segmentsCross(a, b, c, d)) return true;
-  return touch >= 0 && std::min({pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d), pointSegmentDistance(c, a, b),
-                                 pointSegmentDistance(d, a, b)}) <= touch;
+  return touch >= 0 && std::min({segmentDistance(a, c, d), segmentDistance(b, c, d), segmentDistance(c, a, b),
+                                 segmentDistance(d, a, b)}) <= touch;
 }
 }  // namespace
+
+double segmentDistance(const Eigen::Vector2d& q, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double t = d.squaredNorm() > 0 ? std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (a + t * d - q).norm();
+}
 
 std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polygon2>& loops, size_t limit, double touch) {
   struct Span {
@@ -59,11 +59,11 @@ std::vector<std::pair<LoopEdge, LoopEdge>> crossingEdges(const std::vector<Polyg
   // touch. Adjacent edges share a vertex and never cross properly.
   std::vector<Span> spans;
   std::vector<long long> ranks(loops.size(), 0);
+  const double pad = std::max(touch, 0.0);  // a span grown by it meets every span within `touch`
   for (size_t l = 0; l < loops.size(); ++l)
     for (size_t k = 0; k < loops[l].size(); ++k) {
       const auto &a = loops[l][k], &b = loops[l][(k + 1) % loops[l].size()];
       if ((a - b).norm() <= 1e-14) continue;
-      const double pad = std::max(touch, 0.0);
       spans.push_back({std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad, std::min(a.y(), b.y()) - pad, std::max(a.y(), b.y()) + pad,
                        {l, k}, ranks[l]++});
     }

@@ -15,6 +15,8 @@ namespace holefill {
 using Polygon2 = std::vector<Eigen::Vector2d>;  // closed implicitly (last vertex connects to first)
 
 double signedArea(const Polygon2& poly);  // > 0 for counter-clockwise
+// Distance from q to the segment a–b (to a where the segment has no length).
+double segmentDistance(const Eigen::Vector2d& q, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 bool contains(const Polygon2& poly, const Eigen::Vector2d& x);  // even-odd rule
 // An edge of one of several loops: edge k runs from vertex k to vertex k + 1 (the last closes it).
 struct LoopEdge {
