@@ -64,6 +64,12 @@ class FitPanel:
             w.setValue(value)
             layout.addRow(label, w)
             self.weights[key] = w
+        self.relax = QtWidgets.QCheckBox("Relax the labels where they cannot be fitted")
+        self.relax.setObjectName("HoleFillFitRelaxLabels")
+        self.relax.setToolTip("Where the fit over the labeled map misses the tolerance or has weak control points, fit over the "
+                              "region's own flattening, turned as the labels say (the report says when it did)")
+        self.relax.setChecked(True)
+        layout.addRow(self.relax)
         self.show = {}
         for key, label in (("frame", "Show the guiding frame"), ("extended", "Show the extended mesh"), ("surface", "Show the surface")):
             c = QtWidgets.QCheckBox(label)
@@ -85,7 +91,7 @@ class FitPanel:
 
     def options(self):
         return dict(controlPoints=(self.ctrlU.value(), self.ctrlV.value()), extension=self.extension.currentText(),
-                    margin=self.margin.value(), **{k: w.value() for k, w in self.weights.items()})
+                    margin=self.margin.value(), relaxLabels=self.relax.isChecked(), **{k: w.value() for k, w in self.weights.items()})
 
     def preview(self):
         import HoleFill

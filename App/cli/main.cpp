@@ -83,13 +83,15 @@ const char* kUsage =
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension fit|G2|G1|none]\n"
     "                [--margin M] [--fairness W] [--isocurves grid|paper] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
-    "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--untrimmed-out S.brep] [--json]\n"
+    "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--hold-labels] [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; the extension to the domain's rectangle sampled from a\n"
     "                thin-plate fit of the region (fit), or the paper's continuation of its boundary (G2, G1: --fairness,\n"
     "                --isocurves paper and --mesh-fairness shape it), or none; control points refined from 12x12 up to N (40) per\n"
     "                direction while the data max exceeds T (1e-3 of the diagonal; --ctrl alone: exactly those);\n"
     "                labeled vertices deeper than D (0.05) of their side inside its line past a sharp turn are\n"
-    "                left free (negative: all held); LABELS.json:\n"
+    "                left free (negative: all held); where the labeled map's fit misses T, has weak control points or is\n"
+    "                ill-conditioned, the fit over the labels relaxed (the region's free flattening, turned as the labels\n"
+    "                say) is tried and kept if sound (--hold-labels: never); LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
     "                [--weights W.pt] [--json]\n"
@@ -120,7 +122,7 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection", "--volume", "--check-model", "--no-model-accuracy"};  // --no-refine: mesh-fill and gnurbs
+  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection", "--volume", "--check-model", "--no-model-accuracy", "--hold-labels"};  // --no-refine: mesh-fill and gnurbs
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -508,6 +510,7 @@ int cmdFit(const Args& a) {
     if (!(o.tolerance > 0)) throw Error("--tolerance must be positive");
   }
   if (a.has("--release-depth")) o.parameterization.releaseDepth = number(a.get("--release-depth"), "--release-depth");
+  o.relaxLabels = !a.has("--hold-labels");
   setExtensionByName(o, a.get("--extension", "fit"));
   if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
   const std::string iso = a.get("--isocurves", "grid");

@@ -12,14 +12,13 @@
 
 namespace holefill {
 
-LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (o.extend && o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit &&
-      (o.extension.meshFairness > 0 || o.extension.paperIsocurves))
-    throw Error("mesh fairness and the paper's isocurves shape the continuation extension (G2 or G1), not the fitted one: "
-                "ask for extension G2 or G1 with them");
+namespace {
+
+// Extension, fit and refinement over one map of the region: the labeled one, or the labels
+// relaxed (relaxLabels).
+LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization map, const LabeledFitOptions& o) {
   LabeledFitResult r;
-  r.parameterization = parameterizeLabeled(region, segments, o.parameterization);
+  r.parameterization = std::move(map);
   const LabeledParameterization& p = r.parameterization;
   // The extension of the mapped (smoothed) region, the region's own vertices put back in it; its
   // new vertices are placed when a fit is asked for (sampleExtensionFor).
@@ -202,6 +201,54 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
                   r.fit.dataMax, o.tolerance, r.noise);
     r.warnings.push_back(line);
   }
+  return r;
+}
+
+}  // namespace
+
+LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (o.extend && o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit &&
+      (o.extension.meshFairness > 0 || o.extension.paperIsocurves))
+    throw Error("mesh fairness and the paper's isocurves shape the continuation extension (G2 or G1), not the fitted one: "
+                "ask for extension G2 or G1 with them");
+  LabeledFitResult r = fitOnMap(region, parameterizeLabeled(region, segments, o.parameterization), o);
+  // A fit that does all that is asked of it: the data within the tolerance (or the noise), no
+  // weak control point, a condition below 1e8, a valid face.
+  const auto sound = [](const LabeledFitResult& f) {
+    return f.metTolerance && f.fit.weakControlPoints == 0 && f.fit.log10Condition < 8 && f.fit.valid;
+  };
+  if (o.relaxLabels && !sound(r)) {
+    // The labeled map is singular where labels press a boundary that turns onto a straight side
+    // (a crescent's inner arc, a slot's walls, an L's inner corner under the bounding-box rule),
+    // and no tensor-product surface of reasonable size follows it there; or it leaves corners of
+    // the rectangle the extension cannot fill (weak control points). The free flattening, oriented
+    // by the labels, is tried, and kept where it does all that is asked and the labeled fit does
+    // not, or, neither doing it, where it meets the data better without more weak control points,
+    // a worse condition or an invalid face.
+    char line[400];
+    try {
+      LabeledFitResult relaxed = fitOnMap(region, relaxLabels(region, segments, r.parameterization, o.parameterization), o);
+      const TensorFitResult &a = r.fit, &b = relaxed.fit;
+      const bool better = sound(relaxed) || (b.dataMax < a.dataMax && b.weakControlPoints <= a.weakControlPoints &&
+                                             (b.log10Condition < 8 || !(a.log10Condition < 8)) && (b.valid || !a.valid));
+      std::snprintf(line, sizeof line,
+                    "the labeled map's fit %s (max %.2e of the diagonal, %d weak control points); with the labels relaxed (the "
+                    "region's free flattening, turned as the labels say): max %.2e, %d weak: %s",
+                    r.metTolerance ? "falls short" : "misses the data", a.dataMax, a.weakControlPoints, b.dataMax, b.weakControlPoints,
+                    better ? "the relaxed fit is kept" : "the labeled fit is kept");
+      if (better) {
+        relaxed.labelsRelaxed = true;
+        relaxed.warnings.insert(relaxed.warnings.begin(), line);
+        r = std::move(relaxed);
+      } else {
+        r.warnings.push_back(line);
+      }
+    } catch (const Error& e) {
+      std::snprintf(line, sizeof line, "the labels could not be relaxed (%s); the labeled fit is kept", e.what());
+      r.warnings.push_back(line);
+    }
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -244,6 +291,7 @@ std::string LabeledFitResult::toJson() const {
       .field("data_bias", dataBias)
       .field("noise_estimate", noise)
       .field("met_tolerance", metTolerance)
+      .field("labels_relaxed", labelsRelaxed)
       .field("face_valid", fit.valid)
       .field("seconds", seconds)
       .field("refinements", refinements)

@@ -48,6 +48,12 @@ struct LabeledFitOptions {
   // fit.controlU × controlV.
   double tolerance = 1e-3;
   int maxControl = 40;
+  // Where the fit over the labeled map misses the tolerance, has weak control points, a condition
+  // of 1e8 or more or an invalid face: the fit over the labels relaxed (labeled_parameterization.h
+  // relaxLabels: the region's free flattening turned as the labels say) is tried, and kept, with a
+  // warning, where it has none of those faults, or else meets the data better without more of
+  // the others. False: the labeled map is kept whatever its fit.
+  bool relaxLabels = true;
 };
 
 struct LabeledFitResult {
@@ -61,6 +67,8 @@ struct LabeledFitResult {
   // normal deviates is about 4.4 σ): what a fit that follows the surface leaves. Otherwise a
   // warning says by how much it misses, and the CLI exits 3.
   bool metTolerance = false;
+  // The fit is over the labels relaxed (LabeledFitOptions::relaxLabels), not the labeled map.
+  bool labelsRelaxed = false;
   std::vector<std::string> warnings;     // the fit's own (an extension given up); allWarnings() adds the parameterization's
   std::vector<std::string> allWarnings() const;
   double seconds = 0;

@@ -77,4 +77,16 @@ struct LabeledParameterization {
 LabeledParameterization parameterizeLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
                                             const LabeledParameterizationOptions& options = {});
 
+// Where the labels cannot hold (labeled_fit.h tries it when the labeled map's fit misses the
+// data): the region's free flattening (free_flattening.h) of the same smoothed copy, mirrored if
+// need be and turned so that each labeled side lies where the rectangle has it (South below the
+// labeled vertices' centre, East to its right, ...), moved into its bounding rectangle
+// [0, width] × [0, height]. The labels then orient the surface's parameters without pinning any
+// vertex to a line. `labeled` is the labeled map of the same region and segments (its smoothed
+// copy, noise, frame and perimeter are kept). A noisy region (options.denoise) is flattened from a
+// copy smoothed within its surface as well as across it: with no side held, triangles that scan
+// noise turned over at the rim fold the boundary over itself. Throws Error where the flattening does.
+LabeledParameterization relaxLabels(const TriangleMesh& region, const std::vector<LabeledSegment>& segments,
+                                    const LabeledParameterization& labeled, const LabeledParameterizationOptions& options = {});
+
 }  // namespace holefill

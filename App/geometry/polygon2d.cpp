@@ -2,8 +2,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace holefill {
+
+double leastAreaRectangleAngle(const std::vector<Eigen::Vector2d>& points) {
+  // Andrew's monotone chain.
+  std::vector<Eigen::Vector2d> p = points;
+  std::sort(p.begin(), p.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return 0;
+  const auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  std::vector<Eigen::Vector2d> hull(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  if (hull.size() < 3) return 0;
+  double best = std::numeric_limits<double>::infinity(), angle = 0;
+  for (size_t e = 0; e < hull.size(); ++e) {
+    const Eigen::Vector2d d = hull[(e + 1) % hull.size()] - hull[e];
+    if (!(d.norm() > 0)) continue;
+    // Turned by −(the edge's direction), the edge runs along u.
+    double a = -std::atan2(d.y(), d.x());
+    a = std::fmod(std::fmod(a, M_PI / 2) + M_PI / 2, M_PI / 2);
+    const double c = std::cos(a), s = std::sin(a);
+    double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, hi[2] = {-lo[0], -lo[1]};
+    for (const Eigen::Vector2d& q : hull) {
+      const double r[2] = {c * q.x() - s * q.y(), s * q.x() + c * q.y()};
+      for (int i = 0; i < 2; ++i) lo[i] = std::min(lo[i], r[i]), hi[i] = std::max(hi[i], r[i]);
+    }
+    const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+    if (area < best * (1 - 1e-12)) best = area, angle = a;
+  }
+  return angle;
+}
 
 double signedArea(const Polygon2& p) {
   double a = 0.0;

@@ -37,6 +37,11 @@ bool selfIntersects(const Polygon2& poly);
 Polygon2 withoutSelfContacts(Polygon2 loop, double touch);
 // True when an edge of one polygon crosses an edge of the other.
 bool loopsCross(const Polygon2& p, const Polygon2& q);
+// The angle (radians, in [0, π/2)) by which the points, turned anticlockwise about the origin,
+// have the least-area axis-aligned bounding rectangle. The least rectangle has a side along an
+// edge of the convex hull (Freeman & Shapira 1975), so each hull edge is tried. 0 for fewer than
+// three points or points on one line.
+double leastAreaRectangleAngle(const std::vector<Eigen::Vector2d>& points);
 // Mean value coordinates of x (strictly inside) w.r.t. the polygon vertices; they sum to 1.
 Eigen::VectorXd meanValueCoordinates(const Polygon2& poly, const Eigen::Vector2d& x);
 

@@ -28,7 +28,7 @@ def _labelsJson(labels):
 
 
 def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05):
+               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -42,7 +42,11 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     (of the region's diagonal), up to maxControl per direction (0: exactly controlPoints); the
     report's "refinements" lists the tries. releaseDepth: labeled vertices deeper than this
     fraction of their side's chord inside its line, past a sharp turn (a notch, slot, bite), are
-    left free for the extension (negative: every labeled vertex held). The report also holds "uv" (per vertex),
+    left free for the extension (negative: every labeled vertex held). relaxLabels: where the
+    labeled map's fit misses the tolerance, has weak control points or is ill-conditioned, the fit
+    over the labels relaxed (the region's free flattening, turned as the labels say) is tried and
+    kept if it has none of those faults (the report's "labels_relaxed" says so, with a warning);
+    False: the labeled map is kept. The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
     triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
@@ -51,7 +55,7 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(
         v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]), str(extension), int(margin),
         float(fairness), float(smoothing), float(framePlacement), float(meshFairness), int(maxControl), float(tolerance),
-        float(releaseDepth))
+        float(releaseDepth), bool(relaxLabels))
     rep = json.loads(report)
     rep["uv"] = uv
     rep["frame"] = frame
@@ -245,6 +249,9 @@ class LabeledFitFeature:
         add("App::PropertyFloat", "ReleaseDepth", "Fit",
             "Labeled vertices deeper than this fraction of their side inside its line, past a sharp turn, are left free "
             "(negative: all held)", 0.05)
+        add("App::PropertyBool", "RelaxLabels", "Fit",
+            "Where the labeled map's fit misses the tolerance or has weak control points, fit over the region's free "
+            "flattening turned as the labels say, if that is sound", True)
         add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         for n in ("Untrimmed", "Report"):
@@ -259,7 +266,7 @@ class LabeledFitFeature:
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
                                           obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness,
-                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth)
+                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth, obj.RelaxLabels)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):
@@ -274,7 +281,7 @@ class LabeledFitFeature:
 
 
 def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, name="LabeledFit"):
+                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
@@ -289,6 +296,7 @@ def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0,
         obj.Fairness, obj.Smoothing, obj.FramePlacement = float(fairness), float(smoothing), float(framePlacement)
         obj.MeshFairness = float(meshFairness)
         obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth = int(maxControl), float(tolerance), float(releaseDepth)
+        obj.RelaxLabels = bool(relaxLabels)
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
 

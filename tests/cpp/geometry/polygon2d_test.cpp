@@ -109,3 +109,24 @@ TEST(Polygon2d, AFoldThatTouchesItsOwnStretchIsCutOff) {
   EXPECT_FALSE(selfIntersects(lobe));
   EXPECT_GT(std::abs(signedArea(lobe)), 4);
 }
+
+// A 4 × 1 rectangle turned by 0.3 rad, with points inside it: turned by the angle found, it is
+// axis-aligned again (back by 0.3, or on by π/2 − 0.3, which the range [0, π/2) picks); an L's
+// points need no turn; two points or a line give 0.
+TEST(Polygon2d, LeastAreaRectangleAngleAlignsTheSnuggestBox) {
+  const Eigen::Matrix2d turn = Eigen::Rotation2Dd(0.3).toRotationMatrix();
+  std::vector<Eigen::Vector2d> pts;
+  for (const Eigen::Vector2d q : {Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 0), Eigen::Vector2d(4, 1), Eigen::Vector2d(0, 1),
+                                  Eigen::Vector2d(2, 0.5), Eigen::Vector2d(1, 0.2)})
+    pts.push_back(turn * q);
+  const double a = leastAreaRectangleAngle(pts);
+  EXPECT_NEAR(a, M_PI / 2 - 0.3, 1e-12);
+  const Eigen::Matrix2d back = Eigen::Rotation2Dd(a).toRotationMatrix();
+  Eigen::Vector2d lo(1e9, 1e9), hi(-1e9, -1e9);
+  for (const auto& q : pts) lo = lo.cwiseMin(back * q), hi = hi.cwiseMax(back * q);
+  EXPECT_NEAR((hi - lo).prod(), 4, 1e-12);
+  const std::vector<Eigen::Vector2d> ell = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  EXPECT_NEAR(leastAreaRectangleAngle(ell), 0, 1e-12);
+  EXPECT_EQ(leastAreaRectangleAngle({{0, 0}, {1, 1}}), 0);
+  EXPECT_EQ(leastAreaRectangleAngle({{0, 0}, {1, 1}, {2, 2}}), 0);
+}

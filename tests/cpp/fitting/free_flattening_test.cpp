@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fitting/free_flattening.h"
+#include "geometry/error.h"
+#include "test_regions.h"
+
+using namespace holefill;
+
+namespace {
+
+double edgeLengthError(const TriangleMesh& m, const Eigen::MatrixX2d& uv) {
+  double worst = 0;
+  for (Eigen::Index t = 0; t < m.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.triangles(t, k), b = m.triangles(t, (k + 1) % 3);
+      const double l3 = (m.vertices.row(a) - m.vertices.row(b)).norm(), l2 = (uv.row(a) - uv.row(b)).norm();
+      worst = std::max(worst, std::abs(l2 - l3) / l3);
+    }
+  return worst;
+}
+
+int negativeTriangles(const TriangleMesh& m, const Eigen::MatrixX2d& uv) {
+  int n = 0;
+  for (Eigen::Index t = 0; t < m.triangles.rows(); ++t) {
+    const Eigen::Vector2d a = uv.row(m.triangles(t, 1)) - uv.row(m.triangles(t, 0)), b = uv.row(m.triangles(t, 2)) - uv.row(m.triangles(t, 0));
+    n += a.x() * b.y() - a.y() * b.x() <= 0;
+  }
+  return n;
+}
+
+}  // namespace
+
+// A developable region flattens without distortion: a U-slot rolled onto a half cylinder (its
+// slot's walls and an L's inner corner are what a labeled map presses onto a line) and a ring
+// with an inner hole on a cone-like roll, every edge keeping its length, no triangle turned.
+TEST(FreeFlattening, ADevelopableRegionFlattensIsometrically) {
+  Eigen::MatrixX2d truth;
+  const TriangleMesh slot = testregions::gridRegion(
+      30, 30, 1.0 / 30, [](double x, double y) { return !(x > 0.35 && x < 0.65 && y > 0.3); },
+      [](double x, double y) { return Eigen::Vector3d(std::cos(M_PI * x), std::sin(M_PI * x), 2 * y); }, truth);
+  const FreeFlattening f = flattenFree(slot);
+  EXPECT_LT(edgeLengthError(slot, f.uv), 1e-6);
+  EXPECT_EQ(f.flippedTriangles, 0);
+  EXPECT_EQ(negativeTriangles(slot, f.uv), 0);  // anticlockwise stays anticlockwise
+  EXPECT_LT(f.arapEnergy, 1e-10);
+  const TriangleMesh ring = testregions::gridRegion(
+      24, 24, 1.0 / 24, [](double x, double y) { return std::hypot(x - 0.5, y - 0.5) > 0.2; },
+      [](double x, double y) { return Eigen::Vector3d(x, 0.5 * std::cos(2 * y), 0.5 * std::sin(2 * y)); }, truth);
+  const FreeFlattening g = flattenFree(ring);
+  EXPECT_LT(edgeLengthError(ring, g.uv), 1e-6);
+  EXPECT_EQ(g.flippedTriangles, 0);
+}
+
+// A doubly curved region cannot flatten without distortion; the map spreads it and folds nothing.
+// Measured on this cap of a unit sphere (a quarter of its radius across): ARAP energy 1.9e-4.
+TEST(FreeFlattening, ACurvedRegionFlattensWithoutFolds) {
+  Eigen::MatrixX2d truth;
+  const TriangleMesh cap = testregions::gridRegion(
+      20, 20, 0.05, [](double x, double y) { return std::hypot(x - 0.5, y - 0.5) < 0.5; },
+      [](double x, double y) {
+        const double a = 0.5 * (x - 0.5), b = 0.5 * (y - 0.5);
+        return Eigen::Vector3d(a, b, std::sqrt(1 - a * a - b * b));
+      },
+      truth);
+  const FreeFlattening f = flattenFree(cap);
+  EXPECT_EQ(f.flippedTriangles, 0);
+  EXPECT_EQ(negativeTriangles(cap, f.uv), 0);
+  EXPECT_GT(f.arapEnergy, 0);
+  EXPECT_LT(f.arapEnergy, 1e-3);
+  EXPECT_LT(edgeLengthError(cap, f.uv), 0.05);
+}
+
+TEST(FreeFlattening, RefusesWhatCannotBeFlattened) {
+  TriangleMesh one;
+  one.vertices.resize(3, 3);
+  one.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  one.triangles.resize(1, 3);
+  one.triangles << 0, 1, 2;
+  EXPECT_THROW(flattenFree(one), Error);
+  TriangleMesh tetra;
+  tetra.vertices.resize(4, 3);
+  tetra.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  tetra.triangles.resize(4, 3);
+  tetra.triangles << 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2;
+  EXPECT_THROW(flattenFree(tetra), Error);  // closed: no boundary
+  TriangleMesh unused = tetra;
+  unused.triangles.conservativeResize(2, 3);
+  unused.vertices.conservativeResize(5, 3);
+  unused.vertices.row(4) << 5, 5, 5;
+  EXPECT_THROW(flattenFree(unused), Error);
+  TriangleMesh nan = tetra;
+  nan.triangles.conservativeResize(2, 3);
+  nan.vertices(3, 2) = std::nan("");
+  EXPECT_THROW(flattenFree(nan), Error);
+}
