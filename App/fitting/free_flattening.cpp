@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "fitting/arap_terms.h"
+#include "fitting/boundary_embedding.h"
 #include "geometry/error.h"
 #include "mesh/mesh_holes.h"
 
@@ -51,9 +52,14 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
   };
 
   // The start: the as-similar-as-possible map (each triangle's edges matched by a similarity
-  // a·I + b·J of its own, unknown), p0 at the origin and p1 on the u axis at its distance.
+  // a·I + b·J of its own, unknown), p0 at the origin and p1 on the u axis at its distance; or the
+  // map given.
   Eigen::MatrixX2d uv(nv, 2);
-  {
+  const bool given = o.start.rows() > 0;
+  if (given) {
+    if (o.start.rows() != nv || !o.start.allFinite()) throw Error("the start map must give finite parameters for every vertex of the region");
+    uv = o.start;
+  } else {
     const double d = (region.vertices.row(p1) - region.vertices.row(p0)).norm();
     std::vector<int> col(2 * nv, -1);
     int n = 0;
@@ -126,8 +132,11 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
     for (const ArapTerm& term : terms) e += term.w * ((m.row(term.i) - m.row(term.j)).transpose() - R[term.t] * term.x).squaredNorm();
     return e / reference;
   };
+  // From a map given, the boundary is kept simple too.
+  const auto crosses = [&](const Eigen::MatrixX2d& m) { return boundaryCrosses(holes, m); };
+  const auto sound = [&](const Eigen::MatrixX2d& m) { return flips(m) == 0 && !(given && crosses(m)); };
   Eigen::MatrixX2d good = uv;
-  bool goodFree = flips(uv) == 0;
+  bool goodFree = sound(uv);
   double energy = energyOf(uv), tenBefore = std::numeric_limits<double>::infinity();
   FreeFlattening out;
   out.arapEnergy = energy;
@@ -135,19 +144,19 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
     const Eigen::MatrixX2d b = rightSide(uv);
     Eigen::MatrixX2d next = mapOf(solver.solve(A.transpose() * b));
     if (!next.allFinite()) throw Error("could not flatten the region (the ARAP solve failed)");
-    if (goodFree && flips(next) > 0) {
-      // Flip repair: step back towards the last map without folds, halving.
-      for (double alpha = 0.5; alpha > 1e-3; alpha *= 0.5) {
+    if (goodFree && !sound(next)) {
+      // Flip repair: step back towards the last map without folds, halving (none found: the
+      // last good map stays, and the next round's rotations come from it).
+      bool stepped = false;
+      for (double alpha = 0.5; alpha > 1e-3 && !stepped; alpha *= 0.5) {
         const Eigen::MatrixX2d mix = good + alpha * (next - good);
-        if (flips(mix) == 0) {
-          next = mix;
-          break;
-        }
+        if (sound(mix)) next = mix, stepped = true;
       }
+      if (!stepped && given) next = good;
     }
     uv = next;
     energy = energyOf(uv);
-    if (flips(uv) == 0) good = uv, goodFree = true, out.arapEnergy = energy;
+    if (sound(uv)) good = uv, goodFree = true, out.arapEnergy = energy;
     else if (!goodFree) good = uv, out.arapEnergy = energy;
     if ((it + 1) % 10 == 0) {
       if (it + 1 >= o.iterations && !(energy < 0.99 * tenBefore)) break;
@@ -156,6 +165,7 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
   }
   out.uv = good;
   out.flippedTriangles = flips(good);
+  out.boundaryCrosses = crosses(good);
   return out;
 }
 

@@ -41,8 +41,8 @@ struct LabeledFitOptions {
   // refined by half again per
   // direction while the region's data max exceeds `tolerance` (of its diagonal) and what is left
   // is more than noise (which more control points would follow): the data RMS above 1.5 times
-  // the region's scan noise σ, or a neighbourhood of vertices off the surface by more than σ on
-  // average (fitting/residual_bias.h), up to maxControl per direction. A refinement is undone,
+  // the region's scan noise σ, a neighbourhood of vertices off the surface by more than σ on
+  // average (fitting/residual_bias.h), or the max above 5 σ, up to maxControl per direction. A refinement is undone,
   // and ends the search, when it brings weak control points or a condition of 1e8 or more, or
   // lowers neither the data max nor (by a third) the RMS or the bias. maxControl 0: exactly
   // fit.controlU × controlV.

@@ -1043,12 +1043,20 @@ LabeledParameterization relaxLabels(const TriangleMesh& region, const std::vecto
   for (Eigen::Index t = 0; t < tri.rows(); ++t)
     if (topo.flipped[t]) std::swap(tri(t, 1), tri(t, 2));
   const Eigen::MatrixX3d relaxedCopy = denoised(region, o.denoise, labeled.noise, true).vertices;
-  const FreeFlattening flat = flattenFree(TriangleMesh{relaxedCopy, tri});
-  // ARAP keeps triangles from turning over, not distant parts of the boundary from overlapping
-  // (a steep wavy L wraps an arm over its inner corner): such a map trims nothing.
+  const TriangleMesh flattened{relaxedCopy, tri};
+  FreeFlattening flat = flattenFree(flattened);
+  if (flat.flippedTriangles > 0 || flat.boundaryCrosses) {
+    // ARAP keeps triangles from turning over, not distant parts of the boundary from overlapping
+    // (measured on the corpus: an arm of a saddle's U-slot over the other, a steep B-spline L's
+    // arm over its inner corner), and such a map trims nothing. Started from the labeled map,
+    // which is one to one, and kept so at every step.
+    FreeFlatteningOptions from;
+    from.start = labeled.uv;
+    flat = flattenFree(flattened, from);
+  }
   if (flat.flippedTriangles > 0)
     throw Error("the region's free flattening folds " + std::to_string(flat.flippedTriangles) + " triangles");
-  if (boundaryCrosses(findMeshHoles(TriangleMesh{relaxedCopy, tri}), flat.uv))
+  if (flat.boundaryCrosses)
     throw Error("the region's free flattening runs its boundary over itself (a surface too curved to lie flat in one piece)");
   std::vector<Eigen::Vector2d> rim;
   for (int v : labeled.perimeter) rim.push_back(flat.uv.row(v).transpose());

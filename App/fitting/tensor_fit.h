@@ -46,7 +46,7 @@ struct TensorFitResult {
   int correctionRounds = 0;           // parameter corrections taken
   double dataMax = 0, dataRms = 0;    // region vertices to the surface at their parameters / region diagonal
   int weakControlPoints = 0;
-  double log10Condition = 0;          // of the normal matrix (infinite when singular)
+  double log10Condition = 0;          // of the points' own normal matrix BᵀB, unweighted and without the thin plate (infinite when singular)
 };
 
 // `points`/`pointsUV`: what is fitted (rows alike); `region`/`regionUV`: the trimmed region whose

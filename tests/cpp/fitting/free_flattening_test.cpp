@@ -54,7 +54,7 @@ TEST(FreeFlattening, ADevelopableRegionFlattensIsometrically) {
 }
 
 // A doubly curved region cannot flatten without distortion; the map spreads it and folds nothing.
-// Measured on this cap of a unit sphere (a quarter of its radius across): ARAP energy 1.9e-4.
+// Measured on this cap of a unit sphere (half its radius across): ARAP energy 1.1e-5, edges within 0.9%.
 TEST(FreeFlattening, ACurvedRegionFlattensWithoutFolds) {
   Eigen::MatrixX2d truth;
   const TriangleMesh cap = testregions::gridRegion(
@@ -68,8 +68,9 @@ TEST(FreeFlattening, ACurvedRegionFlattensWithoutFolds) {
   EXPECT_EQ(f.flippedTriangles, 0);
   EXPECT_EQ(negativeTriangles(cap, f.uv), 0);
   EXPECT_GT(f.arapEnergy, 0);
-  EXPECT_LT(f.arapEnergy, 1e-3);
-  EXPECT_LT(edgeLengthError(cap, f.uv), 0.05);
+  EXPECT_LT(f.arapEnergy, 1e-4);
+  EXPECT_LT(edgeLengthError(cap, f.uv), 0.02);
+  std::printf("sphere cap: ARAP energy %.3g, worst edge length error %.3g\n", f.arapEnergy, edgeLengthError(cap, f.uv));
 }
 
 TEST(FreeFlattening, RefusesWhatCannotBeFlattened) {
@@ -94,4 +95,27 @@ TEST(FreeFlattening, RefusesWhatCannotBeFlattened) {
   nan.triangles.conservativeResize(2, 3);
   nan.vertices(3, 2) = std::nan("");
   EXPECT_THROW(flattenFree(nan), Error);
+}
+
+// A U-slot of the corpus's saddle: flattened from the conformal start, one leg's boundary runs
+// over the other's across the slot although no triangle folds (ARAP is blind to it). Started from
+// a one-to-one map (here the region's own parameters; relaxLabels gives the labeled map), every
+// step that would make the boundary cross is stepped back, and the map stays one to one.
+TEST(FreeFlattening, StartedFromAOneToOneMapTheBoundaryNeverOverlaps) {
+  Eigen::MatrixX2d truth;
+  const TriangleMesh slot = testregions::gridRegion(
+      50, 50, 1.0 / 50, [](double x, double y) { return !(x > 0.4 && x < 0.6 && y > 0.3); },
+      [](double u, double v) { return Eigen::Vector3d(10 * u, 10 * v, 8 * ((u - .5) * (u - .5) - (v - .5) * (v - .5))); }, truth);
+  const FreeFlattening conformal = flattenFree(slot);
+  EXPECT_TRUE(conformal.boundaryCrosses);
+  EXPECT_EQ(conformal.flippedTriangles, 0);
+  FreeFlatteningOptions o;
+  o.start = 10 * truth;
+  const FreeFlattening f = flattenFree(slot, o);
+  EXPECT_FALSE(f.boundaryCrosses);
+  EXPECT_EQ(f.flippedTriangles, 0);
+  EXPECT_LT(f.arapEnergy, 1e-3);
+  std::printf("ARAP energy: conformal start %.3g (crossing), one-to-one start %.3g\n", conformal.arapEnergy, f.arapEnergy);
+  o.start = Eigen::MatrixX2d::Zero(3, 2);
+  EXPECT_THROW(flattenFree(slot, o), Error);
 }
