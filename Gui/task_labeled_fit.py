@@ -54,6 +54,13 @@ class FitPanel:
         self.margin.setObjectName("HoleFillFitMargin")
         self.margin.setRange(0, 50)
         layout.addRow("Margin layers:", self.margin)
+        self.reach = QtWidgets.QDoubleSpinBox()
+        self.reach.setObjectName("HoleFillFitReach")
+        self.reach.setRange(0, 10)
+        self.reach.setDecimals(3)
+        self.reach.setSingleStep(0.05)
+        self.reach.setToolTip("How far the untrimmed surface reaches past the domain, as a fraction of its larger side")
+        layout.addRow("Reach past the domain:", self.reach)
         self.weights = {}
         for key, label, value in (("fairness", "Isocurve fairness:", 1e-2), ("smoothing", "Thin-plate smoothing:", 1e-6),
                                   ("framePlacement", "Frame placement:", 1.0), ("meshFairness", "Mesh fairness (E_Mesh):", 0.0)):
@@ -91,7 +98,7 @@ class FitPanel:
 
     def options(self):
         return dict(controlPoints=(self.ctrlU.value(), self.ctrlV.value()), extension=self.extension.currentText(),
-                    margin=self.margin.value(), relaxLabels=self.relax.isChecked(), **{k: w.value() for k, w in self.weights.items()})
+                    margin=self.margin.value(), reach=self.reach.value(), relaxLabels=self.relax.isChecked(), **{k: w.value() for k, w in self.weights.items()})
 
     def preview(self):
         import HoleFill

@@ -43,7 +43,7 @@ for ext in G2 none; do
     --extension $ext --out "$out/labeled/fit_$ext.step" --untrimmed-out "$out/labeled/untrimmed_$ext.brep" --json >"$out/labeled/fit_$ext.json"
   "$build/App/holefill" render "$out/labeled/untrimmed_$ext.brep" --mode curvature --quantity mean --view top \
     --out "$out/labeled/untrimmed_$ext.png" --size 800x600 >/dev/null
-  /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print("[demo] labeled fit, extension %-4s data max %.1e, %d weak control points, log10 condition %.1f, %d extension vertices, %.2f s" % (sys.argv[2], r["data_max"], r["weak_control_points"], r["log10_condition"], r["extended_vertices"], r["seconds"]))' "$out/labeled/fit_$ext.json" "$ext"
+  /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print("[demo] labeled fit, extension %-4s data max %.1e, %d weak control points, log10 condition %.1f, %d extension vertices, %.2f s" % (sys.argv[2], r["data_max"], r["weak_control_points"], float("inf") if r["log10_condition"] is None else r["log10_condition"], r["extended_vertices"], r["seconds"]))' "$out/labeled/fit_$ext.json" "$ext"
 done
 mkdir -p "$out/pointcloud"
 cp "$cages"/scan_patch.xyz "$out/pointcloud/"

@@ -82,7 +82,7 @@ const char* kUsage =
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension fit|G2|G1|none]\n"
-    "                [--margin M] [--fairness W] [--isocurves grid|paper] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
+    "                [--margin M] [--reach F] [--fairness W] [--isocurves grid|paper] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
     "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--hold-labels] [--untrimmed-out S.brep] [--json]\n"
     "                labeled fitting of a trimmed mesh region; the extension to the domain's rectangle sampled from a\n"
     "                thin-plate fit of the region (fit), or the paper's continuation of its boundary (G2, G1: --fairness,\n"
@@ -91,7 +91,8 @@ const char* kUsage =
     "                labeled vertices deeper than D (0.05) of their side inside its line past a sharp turn are\n"
     "                left free (negative: all held); where the labeled map's fit misses T, has weak control points or is\n"
     "                ill-conditioned, the fit over the labels relaxed (the region's free flattening, turned as the labels\n"
-    "                say) is tried and kept if sound (--hold-labels: never); LABELS.json:\n"
+    "                say) is tried and kept if sound (--hold-labels: never); the untrimmed surface reaches F (0) of the\n"
+    "                domain's larger side past it (M grid layers at least); LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
     "                [--weights W.pt] [--json]\n"
@@ -513,6 +514,7 @@ int cmdFit(const Args& a) {
   o.relaxLabels = !a.has("--hold-labels");
   setExtensionByName(o, a.get("--extension", "fit"));
   if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
+  if (a.has("--reach")) o.reach = number(a.get("--reach"), "--reach");
   const std::string iso = a.get("--isocurves", "grid");
   if (iso == "paper") o.extension.paperIsocurves = true;
   else if (iso != "grid") throw Error("--isocurves must be grid or paper, got '" + iso + "'");

@@ -54,6 +54,8 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   if (o.order != 2 && o.order != 3) throw Error("the extension order must be 2 (G1) or 3 (G2)");
   if (!(o.spacing >= 0 && o.clearance >= 0 && std::isfinite(o.spacing) && std::isfinite(o.clearance)))
     throw Error("the extension's grid spacing and clearance must be zero (automatic) or positive");
+  if (!(o.marginWidth >= 0 && std::isfinite(o.marginWidth)) || o.marginLayers < 0)
+    throw Error("the extension's margin must be zero or positive");
   if (!(width > 0 && height > 0)) throw Error("the domain rectangle has no area");
   const MeshTopology topo(region);
   const MeshHoleReport holes = findMeshHoles(region, topo);
@@ -72,7 +74,7 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
   DomainExtension out;
   out.regionVertices = nv;
   out.regionTriangles = nt;
-  const double m = o.marginLayers * h;
+  const double m = std::max(o.marginLayers * h, o.marginWidth);
   out.u0 = std::min(-m, uv.col(0).minCoeff());
   out.v0 = std::min(-m, uv.col(1).minCoeff());
   out.u1 = std::max(width + m, uv.col(0).maxCoeff());

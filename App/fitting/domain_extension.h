@@ -24,6 +24,9 @@ namespace holefill {
 struct DomainExtensionOptions {
   double spacing = 0;      // grid spacing in the domain; 0: the region's mean edge length in uv
   int marginLayers = 0;    // grid layers added around the rectangle
+  // Width added around the rectangle in domain units, at least (the larger of it and
+  // marginLayers layers): a margin that stays put when the grid is rebuilt finer.
+  double marginWidth = 0;
   // Least distance of the new samples from the region's boundary in the domain; 0: half the
   // spacing (no slivers). A grid finer than the region's edges keeps the first grid's clearance:
   // samples closer in sit where the region's own vertices already decide the surface.

@@ -37,6 +37,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     // are then fitted where they are.
     DomainExtensionOptions eo = o.extension;
     eo.continueSurface = !sampled;
+    eo.marginWidth = std::max(eo.marginWidth, o.reach * std::max(p.width, p.height));
     r.extension = extendedAt(eo);
   }
   bool extended = o.extend;
@@ -54,6 +55,9 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
   // 1.5e-3 at the same 40 × 40. Each weighs as the area it stands for against the first grid's
   // samples, so that the extension pulls per unit of area as it did before the grid was refined.
   const double firstSpacing = r.extension.spacing;
+  // The margin the first grid got, kept by a finer one (in layers it would shrink with the grid,
+  // and the surface's domain would change between refinements).
+  const double firstMargin = std::max({o.extension.marginLayers * firstSpacing, o.extension.marginWidth, o.reach * std::max(p.width, p.height)});
   const auto sampleExtensionFor = [&](TensorFitOptions& fo) {
     if (!sampled || r.extension.mesh.vertices.rows() <= nr) return;
     const double span = std::min((r.extension.u1 - r.extension.u0) / (fo.controlU - 3), (r.extension.v1 - r.extension.v0) / (fo.controlV - 3));
@@ -62,6 +66,8 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
       eo.continueSurface = false;
       eo.spacing = span / 3;
       eo.clearance = 0.5 * firstSpacing;
+      eo.marginLayers = 0;
+      eo.marginWidth = firstMargin;
       r.extension = extendedAt(eo);
     }
     TensorFitOptions so = fo;
@@ -87,8 +93,13 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     // an L's other arm beyond a held inner leg).
     const double width = std::max(p.width, p.uv.col(0).maxCoeff()) - std::min(0.0, p.uv.col(0).minCoeff());
     const double height = std::max(p.height, p.uv.col(1).maxCoeff()) - std::min(0.0, p.uv.col(1).minCoeff());
-    const int most = std::max(fo.controlU, fo.controlV);
-    const double ratio = std::min(width, height) / std::max(width, height);
+    // A margin (reach) widens the domain, and the counts grow with it, so that the knots are as
+    // fine over the region as without: spread over a domain 40% larger, a bitten wavy field's
+    // fit missed by three times more and its extension was given up with the margin.
+    const double margin = o.extend ? firstMargin : 0.0;
+    const int most = static_cast<int>(std::ceil(std::max(fo.controlU, fo.controlV) * (std::max(width, height) + 2 * margin) /
+                                                std::max(width, height)));
+    const double ratio = (std::min(width, height) + 2 * margin) / (std::max(width, height) + 2 * margin);
     const int fewer = std::max(4, static_cast<int>(std::ceil(most * ratio)));
     fo.controlU = width >= height ? most : fewer;
     fo.controlV = width >= height ? fewer : most;
@@ -102,7 +113,11 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     // exceeds twice the bare fit's (the max: a failure is often local, a G1 extension into the
     // same strip left the RMS within 8% and the max 3.2 times the bare fit's) is tried at G1,
     // then left without extension, with a warning.
-    const TensorFitResult bare = fitTensorProduct(region.vertices, p.uv, region, p.uv, fo);
+    // Over the same knots: with a margin (reach) the extension's domain is wider than the
+    // region's, and the bare fit over the region alone, its knots finer there, gave the margin up.
+    TensorFitOptions bo = fo;
+    if (firstMargin > 0) bo.u0 = r.extension.u0, bo.u1 = r.extension.u1, bo.v0 = r.extension.v0, bo.v1 = r.extension.v1;
+    const TensorFitResult bare = fitTensorProduct(region.vertices, p.uv, region, p.uv, bo);
     // Within the tolerance it has pulled nothing off: with parameter correction the bare fit of
     // a clean region reaches 1e-6, and twice that is no failure (the extension was given up on
     // clean regions, and their weak control points came back).
@@ -129,7 +144,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
       if (!kept) {
         r.extension = DomainExtension{};
         extended = false;
-        r.fit = bare;
+        r.fit = firstMargin > 0 ? fitTensorProduct(region.vertices, p.uv, region, p.uv, fo) : bare;
         why += "; fitted without extension";
       }
       r.warnings.push_back(why);
@@ -211,6 +226,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
 
 LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (!(o.reach >= 0 && o.reach <= 10)) throw Error("the reach past the domain must be between 0 and 10 times its larger side");
   if (o.extend && o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit &&
       (o.extension.meshFairness > 0 || o.extension.paperIsocurves))
     throw Error("mesh fairness and the paper's isocurves shape the continuation extension (G2 or G1), not the fitted one: "

@@ -48,6 +48,12 @@ struct LabeledFitOptions {
   // fit.controlU × controlV.
   double tolerance = 1e-3;
   int maxControl = 40;
+  // How far the untrimmed surface reaches past the domain rectangle, as a fraction of the
+  // rectangle's larger side: the extension's margin (a width, kept when its grid is rebuilt
+  // finer). Reverse engineering extends a fitted surface past its region so that its neighbours
+  // can be intersected with it; 0: to the rectangle (and extension.marginLayers grid layers).
+  // Needs the extension.
+  double reach = 0;
   // Where the fit over the labeled map misses the tolerance, has weak control points, a condition
   // of 1e8 or more or an invalid face: the fit over the labels relaxed (labeled_parameterization.h
   // relaxLabels: the region's free flattening turned as the labels say) is tried, and kept, with a

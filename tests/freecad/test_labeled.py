@@ -45,7 +45,9 @@ def test_a_labeled_region_becomes_one_trimmed_face():
     assert face.Area < surface.Area, (face.Area, surface.Area)
     assert m.Topology[0] == before[0], "the mesh was modified"
     alone = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), extension="none")[2]
-    assert alone["weak_control_points"] > 0 and alone["log10_condition"] > rep["log10_condition"], alone
+    # The condition of the points' own normal matrix; singular (null in JSON) without the extension.
+    aloneCond = float("inf") if alone["log10_condition"] is None else alone["log10_condition"]
+    assert alone["weak_control_points"] > 0 and aloneCond > rep["log10_condition"], alone
     # The paper's mesh fairness (E_Mesh) through the Python door: it changes the extension and
     # keeps the fit sound; a negative weight is refused.
     g2 = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), extension="G2")[2]

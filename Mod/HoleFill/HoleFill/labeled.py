@@ -28,7 +28,7 @@ def _labelsJson(labels):
 
 
 def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True):
+               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.0):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -46,7 +46,9 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     labeled map's fit misses the tolerance, has weak control points or is ill-conditioned, the fit
     over the labels relaxed (the region's free flattening, turned as the labels say) is tried and
     kept if it has none of those faults (the report's "labels_relaxed" says so, with a warning);
-    False: the labeled map is kept. The report also holds "uv" (per vertex),
+    False: the labeled map is kept. reach: how far the untrimmed surface reaches past the
+    domain's rectangle, as a fraction of its larger side (the extension's margin; 0: to the
+    rectangle and `margin` grid layers). The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
     triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
@@ -55,8 +57,10 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(
         v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]), str(extension), int(margin),
         float(fairness), float(smoothing), float(framePlacement), float(meshFairness), int(maxControl), float(tolerance),
-        float(releaseDepth), bool(relaxLabels))
+        float(releaseDepth), bool(relaxLabels), float(reach))
     rep = json.loads(report)
+    if rep.get("log10_condition") is None:
+        rep["log10_condition"] = float("inf")  # JSON has no infinity: a singular normal matrix
     rep["uv"] = uv
     rep["frame"] = frame
     rep["extended"] = (ev, et)
@@ -252,6 +256,8 @@ class LabeledFitFeature:
         add("App::PropertyBool", "RelaxLabels", "Fit",
             "Where the labeled map's fit misses the tolerance or has weak control points, fit over the region's free "
             "flattening turned as the labels say, if that is sound", True)
+        add("App::PropertyFloat", "Reach", "Fit",
+            "How far the untrimmed surface reaches past the domain, as a fraction of its larger side (0: to the domain)", 0.0)
         add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         for n in ("Untrimmed", "Report"):
@@ -266,7 +272,7 @@ class LabeledFitFeature:
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
                                           obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness,
-                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth, obj.RelaxLabels)
+                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth, obj.RelaxLabels, obj.Reach)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):
@@ -281,7 +287,8 @@ class LabeledFitFeature:
 
 
 def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, name="LabeledFit"):
+                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.0,
+                   name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
@@ -297,6 +304,7 @@ def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0,
         obj.MeshFairness = float(meshFairness)
         obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth = int(maxControl), float(tolerance), float(releaseDepth)
         obj.RelaxLabels = bool(relaxLabels)
+        obj.Reach = float(reach)
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
 

@@ -92,7 +92,17 @@ TEST(DomainExtension, RefusesMismatchedOrBadInput) {
     g.spacing = 0;
     g.clearance = bad;
     EXPECT_THROW(extendToRectangle(region, uv, 4, 2, g), Error);
+    g.clearance = 0;
+    g.marginWidth = bad;
+    EXPECT_THROW(extendToRectangle(region, uv, 4, 2, g), Error);
   }
+  // A margin width is the domain's, whatever the grid: 0.5 past each side.
+  DomainExtensionOptions wide;
+  wide.marginWidth = 0.5;
+  wide.continueSurface = false;
+  const DomainExtension w = extendToRectangle(region, uv, 4, 2, wide);
+  EXPECT_NEAR(w.u0, -0.5, 1e-12);
+  EXPECT_NEAR(w.v1, 2.5, 1e-12);
   // The grid's spacing is reported; a clearance keeps the new samples that far from the region's
   // boundary whatever the spacing.
   DomainExtensionOptions fine;

@@ -469,3 +469,51 @@ TEST(LabeledFit, AnLWhoseLabeledMapIsSingularIsFittedWithTheLabelsRelaxed) {
     std::printf("%s: held %.2e (%d weak), relaxed %.2e\n", bite ? "bite" : "L", held.fit.dataMax, held.fit.weakControlPoints, r.fit.dataMax);
   }
 }
+
+// The untrimmed surface reaches past the domain as asked (LabeledFitOptions::reach), the same
+// margin whatever the refinement (in grid layers it shrank when a finer control net rebuilt the
+// grid): a bitten corner fitted with a reach of 0.2 of the rectangle's larger side has its knots
+// that far past the rectangle on every side, also when refined past its start (a wavy field at a
+// tolerance of 1e-4), with the region met and no weak control point; the control counts grow with
+// the domain (at 12 x 12 over it, the extension was given up). On a gentle quadric the margin
+// continues the surface (within 1% of the diagonal at the domain's far corner). A negative reach
+// is refused.
+TEST(LabeledFit, TheUntrimmedSurfaceReachesPastTheDomainAsAsked) {
+  const std::function<Eigen::Vector3d(double, double)> wavy = [](double u, double v) {
+    return Eigen::Vector3d(u, v, 0.15 * std::sin(5 * u) * std::cos(4 * v) + 0.1 * std::sin(7 * v + u));
+  };
+  const std::function<Eigen::Vector3d(double, double)> quadric = [](double u, double v) {
+    return Eigen::Vector3d(u, v, 0.2 * u * v + 0.1 * u * u);
+  };
+  for (const bool gentle : {false, true}) {
+    SCOPED_TRACE(gentle ? "quadric" : "wavy");
+    const auto& field = gentle ? quadric : wavy;
+    Eigen::MatrixX2d uv;
+    const TriangleMesh region =
+        testregions::gridRegion(24, 24, 1.0 / 24, [](double u, double v) { return std::hypot(u - 1, v - 1) > 0.45; }, field, uv);
+    const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, uv);
+    LabeledFitOptions o;
+    o.relaxLabels = false;
+    o.reach = 0.2;
+    o.fit.controlU = o.fit.controlV = gentle ? 12 : 6;  // the wavy field from a coarse start: refined
+    const LabeledFitResult r = fitLabeled(region, labels, o);
+    ASSERT_GT(r.extension.mesh.vertices.rows(), region.vertices.rows());
+    const BSplineSurface& s = r.fit.surface;
+    const double W = r.parameterization.width, H = r.parameterization.height, m = 0.2 * std::max(W, H);
+    std::printf("%dx%d over [%.3f, %.3f] x [%.3f, %.3f], rectangle %.3f x %.3f, data max %.2e, %zu tries\n", s.numU(), s.numV(),
+                s.knotsU.front(), s.knotsU.back(), s.knotsV.front(), s.knotsV.back(), W, H, r.fit.dataMax, r.refinements.size());
+    if (!gentle) EXPECT_GE(r.refinements.size(), 2u);  // refined past the start
+    EXPECT_NEAR(s.knotsU.front(), -m, 1e-6 * m);
+    EXPECT_NEAR(s.knotsU.back(), W + m, 1e-6 * m);
+    EXPECT_NEAR(s.knotsV.front(), -m, 1e-6 * m);
+    EXPECT_NEAR(s.knotsV.back(), H + m, 1e-6 * m);
+    EXPECT_TRUE(r.metTolerance);
+    EXPECT_EQ(r.fit.weakControlPoints, 0);
+    if (gentle) {
+      const Eigen::Vector3d corner = s.point(-m, -m);
+      EXPECT_LT(std::abs(corner.z() - field(corner.x(), corner.y()).z()), 0.01 * std::sqrt(2.0)) << corner.transpose();
+    }
+    o.reach = -0.1;
+    EXPECT_THROW(fitLabeled(region, labels, o), Error);
+  }
+}
