@@ -59,6 +59,7 @@ class FitPanel:
         self.reach.setRange(0, 10)
         self.reach.setDecimals(3)
         self.reach.setSingleStep(0.05)
+        self.reach.setValue(0.05)
         self.reach.setToolTip("How far the untrimmed surface reaches past the domain, as a fraction of its larger side")
         layout.addRow("Reach past the domain:", self.reach)
         self.weights = {}

@@ -91,7 +91,7 @@ const char* kUsage =
     "                labeled vertices deeper than D (0.05) of their side inside its line past a sharp turn are\n"
     "                left free (negative: all held); where the labeled map's fit misses T, has weak control points or is\n"
     "                ill-conditioned, the fit over the labels relaxed (the region's free flattening, turned as the labels\n"
-    "                say) is tried and kept if sound (--hold-labels: never); the untrimmed surface reaches F (0) of the\n"
+    "                say) is tried and kept if sound (--hold-labels: never); the untrimmed surface reaches F (0.05) of the\n"
     "                domain's larger side past it (M grid layers at least); LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"

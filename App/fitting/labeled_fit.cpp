@@ -97,8 +97,9 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     // fine over the region as without: spread over a domain 40% larger, a bitten wavy field's
     // fit missed by three times more and its extension was given up with the margin.
     const double margin = o.extend ? firstMargin : 0.0;
-    const int most = static_cast<int>(std::ceil(std::max(fo.controlU, fo.controlV) * (std::max(width, height) + 2 * margin) /
-                                                std::max(width, height)));
+    const int most = margin > 0 ? static_cast<int>(std::ceil(std::max(fo.controlU, fo.controlV) * (std::max(width, height) + 2 * margin) /
+                                                             std::max(width, height)))
+                                : std::max(fo.controlU, fo.controlV);
     const double ratio = (std::min(width, height) + 2 * margin) / (std::max(width, height) + 2 * margin);
     const int fewer = std::max(4, static_cast<int>(std::ceil(most * ratio)));
     fo.controlU = width >= height ? most : fewer;

@@ -504,7 +504,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
      py::arg("extension") = "fit", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
      py::arg("meshFairness") = 0.0, py::arg("maxControl") = 40, py::arg("tolerance") = 1e-3, py::arg("releaseDepth") = 0.05,
-     py::arg("relaxLabels") = true, py::arg("reach") = 0.0,
+     py::arg("relaxLabels") = true, py::arg("reach") = 0.05,
      "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
   m.def("parameterizeCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,

@@ -425,8 +425,8 @@ void curvaturePicture(const BSplineSurface& s, const std::string& path, const st
 // 4 labeled + G2 extension with the paper's mesh fairness E_Mesh at 1e-2, 5 unlabeled: plane
 // parameters + G2 extension, 8 labeled + G2 extension with the paper's isocurve fairness, 9
 // labeled + the paper's G2 continuation of the boundary as the extension (ours samples a
-// thin-plate fit of the region there; labeled_fit.h), 10 as 0 with the untrimmed surface reaching
-// a tenth of the domain past it (LabeledFitOptions::reach) (6 and 7 are approxSurface, run
+// thin-plate fit of the region there; labeled_fit.h), 10 as 0 with the untrimmed surface ending at
+// the domain (LabeledFitOptions::reach 0, or BENCH_FIT_REACH) (6 and 7 are approxSurface, run
 // elsewhere); 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each
 // fitted point got; validFace: whether the trimmed face is valid (-1: the anchors trim none).
 BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV,
@@ -440,7 +440,9 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     o.extend = method != 1;
     if (method == 4) o.extension.meshFairness = 1e-2;
     o.extension.paperIsocurves = method == 8;
-    if (method == 10) o.reach = 0.1;  // the untrimmed surface reaching past the domain, as the band around the region measures it
+    // Method 10: the untrimmed surface ending at the domain (reach 0), or reaching BENCH_FIT_REACH
+    // of it past (the band around the region is the region's box grown by a tenth).
+    if (method == 10) o.reach = std::getenv("BENCH_FIT_REACH") ? std::atof(std::getenv("BENCH_FIT_REACH")) : 0.0;
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
     fittedUV = r.extension.uv.rows() > 0 ? r.extension.uv : r.parameterization.uv;  // no extension, or one given up
     fittedUV.topRows(r.fit.regionUV.rows()) = r.fit.regionUV;                         // as corrected
@@ -491,7 +493,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
                                             "unlabeled + G2 extension (plane param.)", "approxSurface (default smoothing)",
                                             "approxSurface (no smoothing)", "labeled + G2 extension, the paper's isocurve fairness",
                                             "labeled + G2 continuation extension (the paper's)",
-                                            "labeled + extension (thin-plate fit), reaching 0.1 past the domain"};
+                                            "labeled + extension (thin-plate fit), reach 0 (BENCH_FIT_REACH)"};
   // BENCH_FIT_ONLY=0,1,3 runs only those methods (the rest are rows marked not run): a quick
   // look at one change beside its anchor while iterating; the committed tables run them all.
   std::vector<bool> only(methods.size(), true);

@@ -28,7 +28,7 @@ def _labelsJson(labels):
 
 
 def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.0):
+               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.05):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -48,7 +48,7 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     kept if it has none of those faults (the report's "labels_relaxed" says so, with a warning);
     False: the labeled map is kept. reach: how far the untrimmed surface reaches past the
     domain's rectangle, as a fraction of its larger side (the extension's margin; 0: to the
-    rectangle and `margin` grid layers). The report also holds "uv" (per vertex),
+    rectangle and `margin` grid layers; 0.05 by default). The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
     triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
@@ -257,7 +257,7 @@ class LabeledFitFeature:
             "Where the labeled map's fit misses the tolerance or has weak control points, fit over the region's free "
             "flattening turned as the labels say, if that is sound", True)
         add("App::PropertyFloat", "Reach", "Fit",
-            "How far the untrimmed surface reaches past the domain, as a fraction of its larger side (0: to the domain)", 0.0)
+            "How far the untrimmed surface reaches past the domain, as a fraction of its larger side (0: to the domain)", 0.05)
         add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         for n in ("Untrimmed", "Report"):
@@ -287,7 +287,7 @@ class LabeledFitFeature:
 
 
 def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.0,
+                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.05,
                    name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
