@@ -73,7 +73,7 @@ if "$H" fit "$T/region.obj" --labels "$T/labels.json" --extension G2 --isocurves
   ok "fit with the paper's isocurve fairness"; else bad "fit --isocurves paper: $(cat "$T/err")"; fi
 expect_error "--max-ctrl below --ctrl" "--max-ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
 expect_error "zero --tolerance" "--tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
-expect_error "negative --reach" "reach past the domain" "$T/region.obj" --labels "$T/labels.json" --reach -0.1
+expect_error "negative --reach" "--reach must be a non-negative number" "$T/region.obj" --labels "$T/labels.json" --reach -0.1
 # (--reach 0: the domain is the rectangle, 6 x 3 units; the default reach widens it by 0.05 of 6 a side.)
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --tolerance 1e-4 --reach 0 --out "$T/fit_refined.brep" --json \
      >"$T/fit_refined.json" 2>"$T/err"; then ok "fit with refined control points"; else bad "fit --max-ctrl: $(cat "$T/err")"; fi
