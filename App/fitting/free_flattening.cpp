@@ -107,9 +107,11 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(Eigen::SparseMatrix<double>(A.transpose() * A));
   if (solver.info() != Eigen::Success) throw Error("could not flatten the region (the ARAP system is singular)");
   const Eigen::RowVector2d anchor = uv.row(p0);
+  // The local step's rotations of the current map: they give its energy and the next global
+  // step's right side, once per round.
+  std::vector<Eigen::Matrix2d> R;
   // The same right side serves both coordinates: the rows are per edge, the columns per vertex.
-  const auto rightSide = [&](const Eigen::MatrixX2d& m) {
-    const std::vector<Eigen::Matrix2d> R = arapRotations(terms, m, nt);
+  const auto rightSide = [&]() {
     Eigen::MatrixX2d b(static_cast<Eigen::Index>(terms.size()), 2);
     for (size_t k = 0; k < terms.size(); ++k) {
       const ArapTerm& term = terms[k];
@@ -126,8 +128,7 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
     for (int v = 0; v < nv; ++v) m.row(v) = col[v] >= 0 ? Eigen::RowVector2d(z.row(col[v])) : anchor;
     return m;
   };
-  const auto energyOf = [&](const Eigen::MatrixX2d& m) {
-    const std::vector<Eigen::Matrix2d> R = arapRotations(terms, m, nt);
+  const auto energyOf = [&](const Eigen::MatrixX2d& m) {  // of m, whose rotations R holds
     double e = 0;
     for (const ArapTerm& term : terms) e += term.w * ((m.row(term.i) - m.row(term.j)).transpose() - R[term.t] * term.x).squaredNorm();
     return e / reference;
@@ -137,26 +138,29 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
   const auto sound = [&](const Eigen::MatrixX2d& m) { return flips(m) == 0 && !(given && crosses(m)); };
   Eigen::MatrixX2d good = uv;
   bool goodFree = sound(uv);
+  R = arapRotations(terms, uv, nt);
   double energy = energyOf(uv), tenBefore = std::numeric_limits<double>::infinity();
   FreeFlattening out;
   out.arapEnergy = energy;
   for (int it = 0; it < std::max(o.iterations, o.maxIterations); ++it) {
-    const Eigen::MatrixX2d b = rightSide(uv);
+    const Eigen::MatrixX2d b = rightSide();
     Eigen::MatrixX2d next = mapOf(solver.solve(A.transpose() * b));
     if (!next.allFinite()) throw Error("could not flatten the region (the ARAP solve failed)");
-    if (goodFree && !sound(next)) {
+    bool nextSound = sound(next);
+    if (goodFree && !nextSound) {
       // Flip repair: step back towards the last map without folds, halving (none found: the
       // last good map stays, and the next round's rotations come from it).
       bool stepped = false;
       for (double alpha = 0.5; alpha > 1e-3 && !stepped; alpha *= 0.5) {
         const Eigen::MatrixX2d mix = good + alpha * (next - good);
-        if (sound(mix)) next = mix, stepped = true;
+        if (sound(mix)) next = mix, stepped = nextSound = true;
       }
-      if (!stepped && given) next = good;
+      if (!stepped && given) next = good, nextSound = true;
     }
     uv = next;
+    R = arapRotations(terms, uv, nt);
     energy = energyOf(uv);
-    if (sound(uv)) good = uv, goodFree = true, out.arapEnergy = energy;
+    if (nextSound) good = uv, goodFree = true, out.arapEnergy = energy;
     else if (!goodFree) good = uv, out.arapEnergy = energy;
     if ((it + 1) % 10 == 0) {
       if (it + 1 >= o.iterations && !(energy < 0.99 * tenBefore)) break;

@@ -20,6 +20,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
   LabeledFitResult r;
   r.parameterization = std::move(map);
   const LabeledParameterization& p = r.parameterization;
+  const double reachWidth = o.reach * std::max(p.width, p.height);
   // The extension of the mapped (smoothed) region, the region's own vertices put back in it; its
   // new vertices are placed when a fit is asked for (sampleExtensionFor).
   const Eigen::Index nr = region.vertices.rows();
@@ -37,7 +38,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     // are then fitted where they are.
     DomainExtensionOptions eo = o.extension;
     eo.continueSurface = !sampled;
-    eo.marginWidth = std::max(eo.marginWidth, o.reach * std::max(p.width, p.height));
+    eo.marginWidth = std::max(eo.marginWidth, reachWidth);
     r.extension = extendedAt(eo);
   }
   bool extended = o.extend;
@@ -57,7 +58,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
   const double firstSpacing = r.extension.spacing;
   // The margin the first grid got, kept by a finer one (in layers it would shrink with the grid,
   // and the surface's domain would change between refinements).
-  const double firstMargin = std::max({o.extension.marginLayers * firstSpacing, o.extension.marginWidth, o.reach * std::max(p.width, p.height)});
+  const double firstMargin = std::max({o.extension.marginLayers * firstSpacing, o.extension.marginWidth, reachWidth});
   const auto sampleExtensionFor = [&](TensorFitOptions& fo) {
     if (!sampled || r.extension.mesh.vertices.rows() <= nr) return;
     const double span = std::min((r.extension.u1 - r.extension.u0) / (fo.controlU - 3), (r.extension.v1 - r.extension.v0) / (fo.controlV - 3));

@@ -1106,12 +1106,9 @@ LabeledParameterization relaxLabels(const TriangleMesh& region, const std::vecto
   out.flippedTriangles = flat.flippedTriangles;
   out.arapEnergy = flat.arapEnergy;
   // The perimeter anticlockwise in the new map.
-  double area = 0;
-  for (size_t k = 0; k < out.perimeter.size(); ++k) {
-    const Eigen::Vector2d a = out.uv.row(out.perimeter[k]), b = out.uv.row(out.perimeter[(k + 1) % out.perimeter.size()]);
-    area += a.x() * b.y() - a.y() * b.x();
-  }
-  if (area < 0) std::reverse(out.perimeter.begin(), out.perimeter.end());
+  Polygon2 loop;
+  for (int v : out.perimeter) loop.push_back(out.uv.row(v).transpose());
+  if (signedArea(loop) < 0) std::reverse(out.perimeter.begin(), out.perimeter.end());
   out.warnings.clear();
   return out;
 }
