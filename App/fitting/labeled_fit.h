@@ -61,7 +61,11 @@ struct LabeledFitOptions {
   // of 1e8 or more or an invalid face: the fit over the labels relaxed (labeled_parameterization.h
   // relaxLabels: the region's free flattening turned as the labels say) is tried, and kept, with a
   // warning, where it has none of those faults, or else meets the data better without more of
-  // the others. False: the labeled map is kept whatever its fit.
+  // the others. Under scan noise (5 σ above the tolerance) a labeled fit that needed refining is
+  // sound yet may follow the noise: the relaxed map is tried too and kept where it is sound with
+  // fewer control points. A labeled map that cannot be fitted at all (its boundary crosses itself
+  // in the domain) is replaced by the relaxed one, or its error stands. False: the labeled map
+  // is kept whatever its fit.
   bool relaxLabels = true;
 };
 
@@ -78,6 +82,7 @@ struct LabeledFitResult {
   bool metTolerance = false;
   // The fit is over the labels relaxed (LabeledFitOptions::relaxLabels), not the labeled map.
   bool labelsRelaxed = false;
+  int refinementsKept = 0;               // refinements of the control net kept past the first fit
   std::vector<std::string> warnings;     // the fit's own (an extension given up); allWarnings() adds the parameterization's
   std::vector<std::string> allWarnings() const;
   double seconds = 0;

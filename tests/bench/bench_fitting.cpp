@@ -52,6 +52,7 @@
 #include "geometry/polygon2d.h"
 #include "geometry/text_file.h"
 #include "mesh/mesh_io.h"
+#include "mesh/mesh_topology.h"
 #include "geometry/surface_projection.h"
 #include "inspect/color_scale.h"
 #include "inspect/raster_image.h"
@@ -444,6 +445,10 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     // of it past (the band around the region is the region's box grown by a tenth).
     if (method == 10) o.reach = std::getenv("BENCH_FIT_REACH") ? std::atof(std::getenv("BENCH_FIT_REACH")) : 0.0;
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
+    if (method == 0 && std::getenv("BENCH_FIT_WHY")) {
+      for (const std::string& line : r.refinements) std::fprintf(stderr, "  why: %s\n", line.c_str());
+      for (const std::string& line : r.allWarnings()) std::fprintf(stderr, "  warning: %s\n", line.c_str());
+    }
     fittedUV = r.extension.uv.rows() > 0 ? r.extension.uv : r.parameterization.uv;  // no extension, or one given up
     fittedUV.topRows(r.fit.regionUV.rows()) = r.fit.regionUV;                         // as corrected
     validFace = r.fit.valid ? 1 : 0;
@@ -496,6 +501,8 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
                                             "labeled + extension (thin-plate fit), reach 0 (BENCH_FIT_REACH)"};
   // BENCH_FIT_ONLY=0,1,3 runs only those methods (the rest are rows marked not run): a quick
   // look at one change beside its anchor while iterating; the committed tables run them all.
+  // BENCH_FIT_WHY=1 adds, per region, ours' refinements and warnings and where it misses the
+  // truth (boundary, first ring, inside) to stderr; fit_corpus_shards.py skips those lines.
   std::vector<bool> only(methods.size(), true);
   if (const char* env = std::getenv("BENCH_FIT_ONLY")) {
     std::fill(only.begin(), only.end(), false);
@@ -594,7 +601,32 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
         }
         const Eigen::MatrixX2d own = fittedUV.topRows(std::min<Eigen::Index>(fittedUV.rows(), P.rows()));
         for (double d : distancesTo(s, data, nullptr, &own)) m.dataMax = std::max(m.dataMax, d / diagonal);
-        for (double d : distancesTo(s, truth, nullptr, &own)) truthMax = std::max(truthMax, d / diagonal);
+        const std::vector<double> td = distancesTo(s, truth, nullptr, &own);
+        for (double d : td) truthMax = std::max(truthMax, d / diagonal);
+        if (mi == 0 && std::getenv("BENCH_FIT_WHY")) {
+          // Where ours misses the truth: on the region's boundary, one ring in, or inside (the
+          // share over the goal, and the rms in units of σ, or of the 1e-3 goal where clean).
+          std::vector<int> ring(P.rows(), 2);
+          const MeshTopology topology(mesh);
+          for (const MeshTopology::Edge& e : topology.edges())
+            if (e.count == 1) ring[e.a] = ring[e.b] = 0;
+          for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t)
+            for (int a = 0; a < 3; ++a)
+              if (ring[mesh.triangles(t, a)] == 0)
+                for (int b = 0; b < 3; ++b) ring[mesh.triangles(t, b)] = std::min(ring[mesh.triangles(t, b)], 1);
+          const double unit = row.noise > 0 ? row.noise : 1e-3, limit = row.noise > 0 ? 3 * row.noise : 1e-3;
+          int over[3] = {0, 0, 0}, count[3] = {0, 0, 0};
+          double sq[3] = {0, 0, 0};
+          for (size_t k = 0; k < td.size(); ++k) {
+            const double e = td[k] / diagonal;
+            ++count[ring[k]];
+            sq[ring[k]] += e * e;
+            over[ring[k]] += e > limit;
+          }
+          const auto rms = [&](int c) { return std::sqrt(sq[c] / std::max(1, count[c])) / unit; };
+          std::fprintf(stderr, "  truth: max %.2e; over the goal: %d boundary, %d ring, %d inside; rms / %s: boundary %.2f, ring %.2f, inside %.2f\n",
+                       truthMax, over[0], over[1], over[2], row.noise > 0 ? "sigma" : "1e-3", rms(0), rms(1), rms(2));
+        }
         for (double d : distancesTo(s, band)) m.truthToFit = std::max(m.truthToFit, d / diagonal);
         supportAndCondition(s, fittedUV, m);
       } catch (const std::exception& e) {
