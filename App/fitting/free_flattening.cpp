@@ -59,6 +59,13 @@ FreeFlattening flattenFree(const TriangleMesh& region, const FreeFlatteningOptio
   if (given) {
     if (o.start.rows() != nv || !o.start.allFinite()) throw Error("the start map must give finite parameters for every vertex of the region");
     uv = o.start;
+    // A start that runs the other way round (the labeled map of a region read from its other
+    // side: its triangles all turned against these) is mirrored, which keeps it one to one; ARAP's
+    // rotations cannot undo a reflection (bspline_uslot_clean_cw: every one of 39,882 triangles
+    // counted as a fold, so the restart could never begin, and the labels were not relaxed).
+    double area = 0;
+    for (int t = 0; t < nt; ++t) area += signedArea(uv, tri.row(t).transpose());
+    if (area < 0) uv.col(0) = -uv.col(0);
   } else {
     const double d = (region.vertices.row(p1) - region.vertices.row(p0)).norm();
     std::vector<int> col(2 * nv, -1);
