@@ -501,8 +501,9 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
                                             "labeled + extension (thin-plate fit), reach 0 (BENCH_FIT_REACH)"};
   // BENCH_FIT_ONLY=0,1,3 runs only those methods (the rest are rows marked not run): a quick
   // look at one change beside its anchor while iterating; the committed tables run them all.
-  // BENCH_FIT_WHY=1 adds, per region, ours' refinements and warnings and where it misses the
-  // truth (boundary, first ring, inside) to stderr; fit_corpus_shards.py skips those lines.
+  // BENCH_FIT_WHY=1 adds, per region, ours' refinements and warnings, where it misses the truth
+  // (boundary, first ring, inside) and its six worst vertices to stderr; fit_corpus_shards.py
+  // skips those lines.
   std::vector<bool> only(methods.size(), true);
   if (const char* env = std::getenv("BENCH_FIT_ONLY")) {
     std::fill(only.begin(), only.end(), false);
@@ -622,6 +623,20 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
             ++count[ring[k]];
             sq[ring[k]] += e * e;
             over[ring[k]] += e > limit;
+          }
+          {
+            // The six vertices furthest off the truth: their ring, their distance to the noisy
+            // input (near 0 where the fit follows the noise), their noise, their parameters.
+            const std::vector<double> dd = distancesTo(s, data, nullptr, &own);
+            std::vector<size_t> order(td.size());
+            for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+            std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return td[a] > td[b]; });
+            for (size_t q = 0; q < std::min<size_t>(6, order.size()); ++q) {
+              const size_t k = order[q];
+              const double noiseHere = (P.row(k).transpose() - truth[k]).norm() / diagonal;
+              std::fprintf(stderr, "    worst %zu: ring %d truth %.2e data %.2e |noise| %.2e uv %.3f %.3f (domain %.3f..%.3f, %.3f..%.3f)\n", k, ring[k], td[k] / diagonal,
+                           dd[k] / diagonal, noiseHere, own(k, 0), own(k, 1), s.knotsU.front(), s.knotsU.back(), s.knotsV.front(), s.knotsV.back());
+            }
           }
           const auto rms = [&](int c) { return std::sqrt(sq[c] / std::max(1, count[c])) / unit; };
           std::fprintf(stderr, "  truth: max %.2e; over the goal: %d boundary, %d ring, %d inside; rms / %s: boundary %.2f, ring %.2f, inside %.2f\n",
