@@ -252,8 +252,6 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     r.labelsRelaxed = true;
     r.warnings.insert(r.warnings.begin(), std::string("the labeled map could not be fitted (") + e.what() +
                                               "); the labels were relaxed (the region's free flattening, turned as the labels say)");
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return r;
   }
   // A fit that does all that is asked of it: the data within the tolerance (or the noise), no
   // weak control point, a condition below 1e8, a valid face.
@@ -266,11 +264,9 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   // needed refinement and the noise, not the tolerance, decides soundness, the relaxed map is
   // tried too; of two sound fits the one with fewer control points is kept, since both meet the
   // data within the noise and fewer degrees of freedom follow less of it.
-  const auto controlPoints = [](const LabeledFitResult& f) {
-    return (f.fit.surface.knotsU.size() - 4) * (f.fit.surface.knotsV.size() - 4);
-  };
+  const auto controlPoints = [](const LabeledFitResult& f) { return f.fit.surface.poles.rows(); };
   const bool noiseDecides = 5 * r.noise > o.tolerance && r.refinementsKept > 0;
-  if (o.relaxLabels && (!sound(r) || noiseDecides)) {
+  if (o.relaxLabels && !r.labelsRelaxed && (!sound(r) || noiseDecides)) {
     // The labeled map is singular where labels press a boundary that turns onto a straight side
     // (a crescent's inner arc, a slot's walls, an L's inner corner under the bounding-box rule),
     // and no tensor-product surface of reasonable size follows it there; or it leaves corners of
@@ -282,14 +278,16 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
     try {
       LabeledFitResult relaxed = fitOnMap(region, relaxLabels(region, segments, labeled, o.parameterization), o);
       const TensorFitResult &a = r.fit, &b = relaxed.fit;
-      const bool better = sound(r) ? sound(relaxed) && controlPoints(relaxed) < controlPoints(r)
-                                   : sound(relaxed) || (b.dataMax < a.dataMax && b.weakControlPoints <= a.weakControlPoints &&
-                                                        (b.log10Condition < 8 || !(a.log10Condition < 8)) && (b.valid || !a.valid));
-      if (sound(r))
+      const bool heldSound = sound(r), relaxedSound = sound(relaxed);
+      const bool better = heldSound ? relaxedSound && controlPoints(relaxed) < controlPoints(r)
+                                    : relaxedSound || (b.dataMax < a.dataMax && b.weakControlPoints <= a.weakControlPoints &&
+                                                       (b.log10Condition < 8 || !(a.log10Condition < 8)) && (b.valid || !a.valid));
+      if (heldSound)
         std::snprintf(line, sizeof line,
-                      "the labeled map's fit meets the data within the scan noise with %zu control points (max %.2e of the diagonal); "
-                      "with the labels relaxed (the region's free flattening, turned as the labels say): %zu, max %.2e%s: %s",
-                      controlPoints(r), a.dataMax, controlPoints(relaxed), b.dataMax, sound(relaxed) ? "" : ", not sound",
+                      "the labeled map's fit meets the data within the scan noise with %ld control points (max %.2e of the diagonal); "
+                      "with the labels relaxed (the region's free flattening, turned as the labels say): %ld, max %.2e%s: %s",
+                      static_cast<long>(controlPoints(r)), a.dataMax, static_cast<long>(controlPoints(relaxed)), b.dataMax,
+                      relaxedSound ? "" : ", not sound",
                       better ? "the relaxed fit, following less of the noise, is kept" : "the labeled fit is kept");
       else
         std::snprintf(line, sizeof line,
@@ -301,7 +299,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
         relaxed.labelsRelaxed = true;
         relaxed.warnings.insert(relaxed.warnings.begin(), line);
         r = std::move(relaxed);
-      } else if (sound(r)) {
+      } else if (heldSound) {
         r.refinements.push_back(line);  // a sound fit kept: no warning
       } else {
         // Why the relaxed fit fell short, in its own words (its extension given up, its miss).

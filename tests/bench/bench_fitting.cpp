@@ -601,7 +601,8 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
           for (size_t k = 0; k < puv.size(); ++k) fittedUV.row(static_cast<Eigen::Index>(k)) = puv[k].transpose();
         }
         const Eigen::MatrixX2d own = fittedUV.topRows(std::min<Eigen::Index>(fittedUV.rows(), P.rows()));
-        for (double d : distancesTo(s, data, nullptr, &own)) m.dataMax = std::max(m.dataMax, d / diagonal);
+        const std::vector<double> dd = distancesTo(s, data, nullptr, &own);
+        for (double d : dd) m.dataMax = std::max(m.dataMax, d / diagonal);
         const std::vector<double> td = distancesTo(s, truth, nullptr, &own);
         for (double d : td) truthMax = std::max(truthMax, d / diagonal);
         if (mi == 0 && std::getenv("BENCH_FIT_WHY")) {
@@ -627,7 +628,6 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
           {
             // The six vertices furthest off the truth: their ring, their distance to the noisy
             // input (near 0 where the fit follows the noise), their noise, their parameters.
-            const std::vector<double> dd = distancesTo(s, data, nullptr, &own);
             std::vector<size_t> order(td.size());
             for (size_t k = 0; k < order.size(); ++k) order[k] = k;
             std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return td[a] > td[b]; });

@@ -563,8 +563,8 @@ TEST(LabeledFit, ANoisySlotIsFittedOnTheMapThatFollowsLessOfTheNoise) {
   const LabeledFitResult held = fitLabeled(region, labels, o);
   o.relaxLabels = true;
   const LabeledFitResult r = fitLabeled(region, labels, o);
-  const auto controlPoints = [](const LabeledFitResult& f) { return (f.fit.surface.knotsU.size() - 4) * (f.fit.surface.knotsV.size() - 4); };
-  std::printf("held: %zu control points, %.2f sigma off the truth; relaxed: %zu, %.2f sigma\n", controlPoints(held),
+  const auto controlPoints = [](const LabeledFitResult& f) { return static_cast<long>(f.fit.surface.poles.rows()); };
+  std::printf("held: %ld control points, %.2f sigma off the truth; relaxed: %ld, %.2f sigma\n", controlPoints(held),
               truthMax(held, region, truth) / sigma, controlPoints(r), truthMax(r, region, truth) / sigma);
   EXPECT_TRUE(held.metTolerance);
   EXPECT_GT(held.refinementsKept, 0);
