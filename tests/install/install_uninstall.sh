@@ -13,10 +13,24 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 mods="$HOME/.local/share/FreeCAD/Mod"
 HOLEFILL_BUILD_DIR=$build "$src/scripts/install.sh"
 [ -d "$mods/HoleFill" ] && [ ! -L "$mods/HoleFill" ] || fail "no installed folder at $mods/HoleFill"
-for f in Init.py InitGui.py package.xml holefill libholefill_step.so HoleFillGui Resources .holefill-installed; do
+for f in Init.py InitGui.py package.xml LICENSE holefill libholefill_step.so HoleFillGui Resources .holefill-installed; do
   [ -e "$mods/HoleFill/$f" ] || fail "the install lacks $f"
 done
 ls "$mods/HoleFill"/HoleFillApp*.so >/dev/null || fail "the install lacks the compiled module"
+# The addon's metadata as FreeCAD's Addon Manager reads it: every file it names is in the folder.
+/usr/bin/python3 - "$mods/HoleFill" <<'PY' || fail "package.xml"
+import sys, os, xml.etree.ElementTree as ET
+d = sys.argv[1]; ns = {"p": "https://wiki.freecad.org/Package_Metadata"}
+root = ET.parse(os.path.join(d, "package.xml")).getroot()
+for tag in ("name", "description", "version", "date", "license", "icon"):
+    assert root.find("p:" + tag, ns) is not None and root.find("p:" + tag, ns).text, "no " + tag
+assert os.path.isfile(os.path.join(d, root.find("p:license", ns).get("file"))), "no license file"
+wb = root.find("p:content/p:workbench", ns)
+assert wb.find("p:freecadmin", ns).text == "0.20" and wb.find("p:freecadmax", ns) is not None
+for icon in (root.find("p:icon", ns).text, wb.find("p:icon", ns).text):
+    assert os.path.isfile(os.path.join(d, icon)) and os.path.getsize(os.path.join(d, icon)) <= 10240, icon
+print("package.xml ok: version", root.find("p:version", ns).text)
+PY
 where=$(timeout 120 freecadcmd -c 'import HoleFillApp; print("HOLEFILL_AT=" + HoleFillApp.__file__)' 2>&1 | sed -n 's/^HOLEFILL_AT=//p')
 case "$where" in
   "$mods/HoleFill/"*) echo "FreeCAD loads $where" ;;
