@@ -7,11 +7,22 @@ curvature map of the G2 one (<sample>_mean_G2.png), rendered headless by the cor
 then prints the continuity table."""
 import json
 import os
+import sys
 
 import FreeCAD
 import Part
 
 import HoleFill
+
+# Our tables only: OCCT's STEP writer prints its transfer statistics and FreeCAD's console
+# sequencer its "Recompute..." progress straight to file descriptor 1, below Python. The job
+# writes its own lines to a copy of that descriptor and points descriptor 1 at /dev/null;
+# errors still reach stderr, and Python's traceback with them.
+sys.stdout.flush()
+_ours = os.fdopen(os.dup(1), "w", buffering=1)
+_null = os.open(os.devnull, os.O_WRONLY)
+os.dup2(_null, 1)
+sys.stdout = _ours
 
 OUT = os.environ["HOLEFILL_DEMO_OUT"]
 SAMPLES = os.environ["HOLEFILL_SAMPLES"]
