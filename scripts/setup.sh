@@ -6,6 +6,8 @@ PKGS=(
   build-essential cmake g++ pkg-config
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev occt-misc
+  # OCCT 7.8 (Debian 13): TKDESTEP's link interface reaches TKService, which names -lfontconfig.
+  libfontconfig-dev
   libtbb-dev libeigen3-dev zlib1g-dev libtorch-dev libgtest-dev pybind11-dev python3-dev python3-numpy python3-scipy libcgal-dev
   freecad xvfb xdotool imagemagick python3-pyside2.qttest x11-utils bc
   # libtorch calls the system BLAS: OpenBLAS instead of the reference BLAS makes UVTran 5-10x faster.
