@@ -22,7 +22,9 @@ rm -rf "$out" && mkdir -p "$out"
   # Pictures: the real FreeCAD GUI under Xvfb renders each saved document.
   xvfb-run -a -s "-screen 0 1280x1024x24 -dpi 96 -nolisten tcp" \
     timeout -k 10 300 freecad scripts/demo_render.py >"$HOME/render.log" 2>&1 || true
-  ls "$out"/*.png >/dev/null 2>&1 || { echo "[demo] rendering failed:"; tail -20 "$HOME/render.log"; exit 1; }
+  for doc in "$out"/*.FCStd; do
+    [ -f "${doc%.FCStd}.png" ] || { echo "[demo] rendering $(basename "$doc") failed:" >&2; tail -20 "$HOME/render.log" >&2; exit 1; }
+  done
   rm -rf "$HOME"
 )
 # G² G-NURBS surfaces over the bundled quad cages (CLI): shells, face sidecars, reports, zebra pictures.

@@ -3,6 +3,8 @@ the model in grey, the Fill in orange with its edges, isometric view; a filled m
 its triangle edges."""
 import glob
 import os
+import sys
+import traceback
 
 import FreeCAD
 import FreeCADGui
@@ -12,6 +14,7 @@ OUT = os.environ["HOLEFILL_DEMO_OUT"]
 
 
 def render():
+    code = 1
     try:
         for path in sorted(glob.glob(os.path.join(OUT, "*.FCStd"))):
             doc = FreeCAD.openDocument(path)
@@ -36,8 +39,13 @@ def render():
             FreeCADGui.updateGui()
             view.saveImage(path[:-6] + ".png", 1024, 768, "White")
             FreeCAD.closeDocument(doc.Name)
+        code = 0
+    except Exception:
+        # Said, not swallowed: demo.sh shows this log when a picture is missing.
+        traceback.print_exc()
+        sys.stderr.flush()
     finally:
-        os._exit(0)
+        os._exit(code)
 
 
 QtCore.QTimer.singleShot(0, render)

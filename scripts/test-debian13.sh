@@ -6,6 +6,8 @@
 #   ./scripts/test-debian13.sh            demo.sh, then test.sh (GUI tests under Xvfb included)
 #   ./scripts/test-debian13.sh -- ARGS    test.sh ARGS only (e.g. -- -L freecad)
 #   ./scripts/test-debian13.sh --shell    a shell in the root, at the clone
+#   ./scripts/test-debian13.sh --keep-build [ARGS]   as above, the last run's build folder kept
+#                                         (incremental: for working on a failure, not for a verdict)
 # Needs root (debootstrap, unshare, chroot) and the archive at $HOLEFILL_DEB13_MIRROR (default
 # http://deb.debian.org/debian). /proc, /sys and /dev are bound into the root inside a private
 # mount namespace only: they vanish with the run, however it ends, and nothing that walks the
@@ -32,10 +34,16 @@ if [ "${HOLEFILL_DEB13_INSIDE:-}" != 1 ]; then
   fi
   cp /etc/resolv.conf "$chroot_dir/etc/resolv.conf"
   # A fresh clone of HEAD, as CI sees it: nothing of this checkout's build or outputs.
+  kept=""
+  if [ "${1:-}" = "--keep-build" ]; then
+    shift
+    if [ -d "$chroot_dir$clone/build" ]; then kept="$chroot_dir/work/.holefill-build"; rm -rf --one-file-system "$kept"; mv "$chroot_dir$clone/build" "$kept"; fi
+  fi
   rm -rf --one-file-system "$chroot_dir$clone"
   mkdir -p "$(dirname "$chroot_dir$clone")"
   git clone -q --no-hardlinks "$root" "$chroot_dir$clone"
   echo "[debian13] clone of $(git -C "$root" rev-parse --short HEAD) at $clone in the root"
+  [ -z "$kept" ] || { mv "$kept" "$chroot_dir$clone/build"; echo "[debian13] the last run's build kept"; }
   exec unshare --mount --propagation private /usr/bin/env HOLEFILL_DEB13_INSIDE=1 HOLEFILL_DEB13_ROOT="$chroot_dir" "$0" "$@"
 fi
 
