@@ -9,7 +9,7 @@ PKGS=(
   # OCCT 7.8 (Debian 13): TKDESTEP's link interface reaches TKService, which names -lfontconfig.
   libfontconfig-dev
   libtbb-dev libeigen3-dev zlib1g-dev libtorch-dev libgtest-dev pybind11-dev python3-dev python3-numpy python3-scipy libcgal-dev
-  freecad xvfb xdotool imagemagick python3-pyside2.qttest x11-utils bc
+  freecad xvfb xauth xdotool imagemagick python3-pyside2.qttest x11-utils bc
   # libtorch calls the system BLAS: OpenBLAS instead of the reference BLAS makes UVTran 5-10x faster.
   libopenblas0-pthread python3-matplotlib
 )
