@@ -33,17 +33,22 @@ if [ "${HOLEFILL_DEB13_INSIDE:-}" != 1 ]; then
     touch "$chroot_dir/.holefill-root-complete"
   fi
   cp /etc/resolv.conf "$chroot_dir/etc/resolv.conf"
-  # A fresh clone of HEAD, as CI sees it: nothing of this checkout's build or outputs.
-  kept=""
-  if [ "${1:-}" = "--keep-build" ]; then
+  # A fresh clone of HEAD, as CI sees it: nothing of this checkout's build or outputs. With
+  # --keep-build the last clone is moved to HEAD in place instead (changed files only get new
+  # times, so the build is incremental) and its build folder kept.
+  if [ "${1:-}" = "--keep-build" ] && [ -d "$chroot_dir$clone/.git" ]; then
     shift
-    if [ -d "$chroot_dir$clone/build" ]; then kept="$chroot_dir/work/.holefill-build"; rm -rf --one-file-system "$kept"; mv "$chroot_dir$clone/build" "$kept"; fi
+    git -C "$chroot_dir$clone" fetch -q "$root" HEAD
+    git -C "$chroot_dir$clone" reset -q --hard FETCH_HEAD
+    git -C "$chroot_dir$clone" clean -q -fdx -e build
+    echo "[debian13] the last clone moved to $(git -C "$root" rev-parse --short HEAD), its build kept"
+  else
+    [ "${1:-}" != "--keep-build" ] || shift
+    rm -rf --one-file-system "$chroot_dir$clone"
+    mkdir -p "$(dirname "$chroot_dir$clone")"
+    git clone -q --no-hardlinks "$root" "$chroot_dir$clone"
+    echo "[debian13] clone of $(git -C "$root" rev-parse --short HEAD) at $clone in the root"
   fi
-  rm -rf --one-file-system "$chroot_dir$clone"
-  mkdir -p "$(dirname "$chroot_dir$clone")"
-  git clone -q --no-hardlinks "$root" "$chroot_dir$clone"
-  echo "[debian13] clone of $(git -C "$root" rev-parse --short HEAD) at $clone in the root"
-  [ -z "$kept" ] || { mv "$kept" "$chroot_dir$clone/build"; echo "[debian13] the last run's build kept"; }
   exec unshare --mount --propagation private /usr/bin/env HOLEFILL_DEB13_INSIDE=1 HOLEFILL_DEB13_ROOT="$chroot_dir" "$0" "$@"
 fi
 
