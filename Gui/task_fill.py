@@ -8,7 +8,7 @@ import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
 import HoleFill
-from HoleFill import fill_feature
+from HoleFill import fill_feature, preferences
 
 
 def _selectedHole():
@@ -103,6 +103,11 @@ class FillTaskPanel:
             self.tolerance.setValue(float(existing.Tolerance))
             self.output.setCurrentText(existing.Output)
         else:
+            # A new fill starts from the user's preferences (Edit → Preferences → HoleFill).
+            self.method.setCurrentText(preferences.get("FillMethod"))
+            self.continuity.setCurrentText(preferences.get("FillContinuity"))
+            self.tolerance.setValue(preferences.get("FillTolerance"))
+            self.output.setCurrentText(preferences.get("FillOutput"))
             self.takeSelection()
         self.showHole()
         if existing is not None:
@@ -187,6 +192,7 @@ class FillTaskPanel:
             self.obj = self.doc.addObject("Part::FeaturePython", "Fill")
             self.created = True
             fill_feature.FillFeature(self.obj)
+            self.obj.AngularTolerance = preferences.get("FillAngularTolerance")
             from HoleFillGui import view_provider
             view_provider.FillViewProvider(self.obj.ViewObject)
         self.obj.Source = (self.source, self.edges)

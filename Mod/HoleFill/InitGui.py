@@ -27,3 +27,15 @@ class HoleFillWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench)
 
 
 Gui.addWorkbench(HoleFillWorkbench())  # noqa: F821
+
+
+def _addPreferencePage():
+    import os
+    import HoleFillGui
+    from HoleFillGui.preferences_page import PreferencePage
+    # The dialog shows the group with the icon named preferences-<group> on an icon path.
+    Gui.addIconPath(os.path.dirname(HoleFillGui.icon("HoleFill.svg")))  # noqa: F821
+    Gui.addPreferencePage(PreferencePage, "HoleFill")  # noqa: F821
+
+
+_addPreferencePage()

@@ -1,0 +1,60 @@
+"""The workbench's preferences (Edit → Preferences → HoleFill), kept in FreeCAD's parameters under
+User parameter:BaseApp/Preferences/Mod/HoleFill. The task panels start from them; the macro API
+(fillHole, makeFill, ...) takes its own arguments and reads none of them, so that a macro gives
+the same result on every machine whatever its user chose."""
+import FreeCAD
+
+PATH = "User parameter:BaseApp/Preferences/Mod/HoleFill"
+
+# name: (default, what it sets). The defaults are the macro API's own.
+SETTINGS = {
+    "FillMethod": ("auto", "Fill hole: the parameterization (auto, np, mvc, uvtran)"),
+    "FillContinuity": ("G1", "Fill hole: the continuity asked of the hole's edges (G0, G1, G2)"),
+    "FillTolerance": (0.0, "Fill hole: the G0 tolerance in model units; 0: 1e-6 of the hole's size"),
+    "FillAngularTolerance": (1e-3, "Fill hole: the G1 tolerance in radians"),
+    "FillOutput": ("Face", "Fill hole: the new object holds the face alone (Face) or the source with it sewn in (Sewn)"),
+}
+CHOICES = {"FillMethod": ("auto", "np", "mvc", "uvtran"), "FillContinuity": ("G0", "G1", "G2"), "FillOutput": ("Face", "Sewn")}
+
+
+def _group():
+    return FreeCAD.ParamGet(PATH)
+
+
+def get(name):
+    """The user's value of `name`, or its default; a stored value that is no longer valid (a
+    method renamed, a negative tolerance) reads as the default."""
+    default = SETTINGS[name][0]
+    g = _group()
+    if isinstance(default, float):
+        value = g.GetFloat(name, default)
+        return value if value >= 0 else default
+    value = g.GetString(name, default)
+    if name in CHOICES and value not in CHOICES[name]:
+        return default
+    return value
+
+
+def put(name, value):
+    """Stores `value` for `name` (checked as get() reads it)."""
+    default = SETTINGS[name][0]
+    if isinstance(default, float):
+        value = float(value)
+        if not value >= 0:
+            raise ValueError("%s must be zero or positive" % name)
+        _group().SetFloat(name, value)
+        return
+    value = str(value)
+    if name in CHOICES and value not in CHOICES[name]:
+        raise ValueError("%s must be one of %s" % (name, ", ".join(CHOICES[name])))
+    _group().SetString(name, value)
+
+
+def reset():
+    """Every setting back to its default."""
+    g = _group()
+    for name, (default, _) in SETTINGS.items():
+        if isinstance(default, float):
+            g.RemFloat(name)
+        else:
+            g.RemString(name)

@@ -1,0 +1,91 @@
+"""GUI test: Edit → Preferences has a HoleFill page; a value chosen there and kept with OK is in
+FreeCAD's parameters, and the Fill hole panel of a new fill starts from it (Cancel then leaves the
+document as it was)."""
+import FreeCADGui
+from PySide2 import QtCore, QtWidgets
+
+import guiharness as h
+from HoleFill import preferences
+
+
+def find_page():
+    dlg = QtWidgets.QApplication.activeModalWidget()
+    page = dlg.findChild(QtWidgets.QWidget, "HoleFillPreferences") if dlg is not None else None
+    return dlg, page
+
+
+def show_group(dlg):
+    """Brings the HoleFill group to the front as a click on its entry would (0.20: a list of groups; 1.0: a tree)."""
+    for lw in dlg.findChildren(QtWidgets.QListWidget):
+        for it in lw.findItems("HoleFill", QtCore.Qt.MatchExactly):
+            lw.setCurrentItem(it)
+            return True
+    for tv in dlg.findChildren(QtWidgets.QTreeView):
+        m = tv.model()
+        hits = m.match(m.index(0, 0), QtCore.Qt.DisplayRole, "HoleFill", 1, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive)
+        if hits:
+            tv.setCurrentIndex(hits[0])
+            return True
+    return False
+
+
+def body():
+    preferences.reset()
+    FreeCADGui.activateWorkbench("HoleFillWorkbench")
+    state = {}
+
+    def in_dialog():
+        dlg, page = find_page()
+        if page is None:
+            state.setdefault("tries", 0)
+            state["tries"] += 1
+            if state["tries"] < 50:
+                QtCore.QTimer.singleShot(100, in_dialog)
+            elif dlg is not None:
+                dlg.reject()
+            return
+        state["page"] = True
+        state["shown"] = show_group(dlg)
+        h.pump(300)
+        page.findChild(QtWidgets.QComboBox, "FillMethod").setCurrentText("mvc")
+        page.findChild(QtWidgets.QComboBox, "FillContinuity").setCurrentText("G2")
+        page.findChild(QtWidgets.QComboBox, "FillOutput").setCurrentText("Sewn")
+        h.pump(200)
+        QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_preferences_page.png"))
+        for bb in dlg.findChildren(QtWidgets.QDialogButtonBox):
+            ok = bb.button(QtWidgets.QDialogButtonBox.Ok)
+            if ok is not None and ok.isVisible():
+                ok.click()
+                return
+        dlg.reject()
+
+    QtCore.QTimer.singleShot(300, in_dialog)
+    FreeCADGui.runCommand("Std_DlgPreferences")  # modal: returns when the dialog is closed
+    h.pump(500)
+    assert state.get("page"), "no HoleFill page in Edit -> Preferences"
+    assert state.get("shown"), "the HoleFill group was not found in the dialog's list"
+    got = (preferences.get("FillMethod"), preferences.get("FillContinuity"), preferences.get("FillOutput"))
+    assert got == ("mvc", "G2", "Sewn"), got
+
+    # A new fill's panel starts from the preferences.
+    doc, src = h.sample_document("GuiPrefs", "Panel", "panel_6_sided")
+    names = sorted(o.Name for o in doc.Objects)
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(doc.Name, "Panel", "Edge1")
+    FreeCADGui.runCommand("HoleFill_FillHole")
+    h.pump(800)
+    mw = FreeCADGui.getMainWindow()
+    combos = {c.currentText() for c in mw.findChildren(QtWidgets.QComboBox) if c.isVisible()}
+    assert {"mvc", "G2", "Sewn"} <= combos, combos
+    QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_preferences_fill_panel.png"))
+    for bb in mw.findChildren(QtWidgets.QDialogButtonBox):
+        b = bb.button(QtWidgets.QDialogButtonBox.Cancel)
+        if bb.isVisible() and b is not None and b.isVisible():
+            b.click()
+    h.pump(600)
+    assert sorted(o.Name for o in doc.Objects) == names, sorted(o.Name for o in doc.Objects)
+    preferences.reset()
+    h.finish(True)
+
+
+h.run(body, 500)
