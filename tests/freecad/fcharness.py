@@ -22,7 +22,14 @@ def expect_error(fn, *words):
     raise AssertionError("no HoleFillError raised")
 
 
+# Set by the HoleFillTests package (FreeCAD's own test runner), which gathers the test functions
+# itself: run() then leaves them to it.
+COLLECTING = False
+
+
 def run(namespace):
+    if COLLECTING:
+        return
     tests = sorted((n, f) for n, f in namespace.items() if n.startswith("test_") and callable(f))
     passed, failed = 0, []
     for name, fn in tests:
