@@ -4,6 +4,9 @@ import FreeCADGui
 
 import HoleFillGui
 
+translate = FreeCAD.Qt.translate
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
 COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurface", "HoleFill_ImportCage", "HoleFill_LabelBoundary",
             "HoleFill_FitLabeled", "HoleFill_FitPointCloud", "Separator", "HoleFill_CurvatureMap", "HoleFill_ZebraStripes", "HoleFill_ContinuityCheck"]
 
@@ -11,9 +14,9 @@ COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurfa
 class FillHoleCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_Fill.svg"),
-                "MenuText": "Fill hole",
-                "ToolTip": "Fill an N-sided hole with one trimmed B-spline face.\n"
-                           "Select one edge of the hole (its whole loop is taken) or several edges, then run."}
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_FillHole", "Fill hole"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_FillHole", "Fill an N-sided hole with one trimmed B-spline face.\n"
+                           "Select one edge of the hole (its whole loop is taken) or several edges, then run.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -26,9 +29,9 @@ class FillHoleCommand:
 class FillMeshHolesCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_MeshFill.svg"),
-                "MenuText": "Fill mesh holes",
-                "ToolTip": "Fill holes of a triangle mesh (scan, STL) with well-shaped triangles that follow the surface.\n"
-                           "Select a mesh object, then run: its holes are listed and drawn; check the ones to fill."}
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_FillMeshHoles", "Fill mesh holes"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_FillMeshHoles", "Fill holes of a triangle mesh (scan, STL) with well-shaped triangles that follow the surface.\n"
+                           "Select a mesh object, then run: its holes are listed and drawn; check the ones to fill.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -41,7 +44,7 @@ class FillMeshHolesCommand:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # a core error on this mesh: say it, change nothing
-            inspect_panels._message("Fill mesh holes failed: %s" % e)
+            inspect_panels._message(translate("HoleFill", "Fill mesh holes failed: %s") % e)
             task_meshfill.remove_overlay()
             return
         FreeCADGui.Control.showDialog(panel)
@@ -50,10 +53,10 @@ class FillMeshHolesCommand:
 class GnurbsSurfaceCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_Gnurbs.svg"),
-                "MenuText": "G-NURBS surface",
-                "ToolTip": "A curvature-continuous (G²) surface over a quad cage with extraordinary points.\n"
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_GnurbsSurface", "G-NURBS surface"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_GnurbsSurface", "A curvature-continuous (G²) surface over a quad cage with extraordinary points.\n"
                            "Select the cage (an object of quadrilateral faces), run, click edges to make them sharp,\n"
-                           "set anchors at extraordinary points; the surface follows the cage when it changes."}
+                           "set anchors at extraordinary points; the surface follows the cage when it changes.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -66,7 +69,7 @@ class GnurbsSurfaceCommand:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # not a quad cage, or a core error: say it, change nothing
-            inspect_panels._message("G-NURBS surface: %s" % e)
+            inspect_panels._message(translate("HoleFill", "G-NURBS surface: %s") % e)
             task_gnurbs.remove_overlay()
             return
         FreeCADGui.Control.showDialog(panel)
@@ -75,10 +78,10 @@ class GnurbsSurfaceCommand:
 class LabelBoundaryCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_Labels.svg"),
-                "MenuText": "Label boundary",
-                "ToolTip": "Label the boundary of a mesh region North/East/South/West for a labeled fit.\n"
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_LabelBoundary", "Label boundary"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_LabelBoundary", "Label the boundary of a mesh region North/East/South/West for a labeled fit.\n"
                            "Select a mesh region (or its labels to edit them), run, click boundary edges to cycle\n"
-                           "their segment's label, click boundary vertices to split or merge segments."}
+                           "their segment's label, click boundary vertices to split or merge segments.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -92,7 +95,7 @@ class LabelBoundaryCommand:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # a closed mesh, or a core error: say it, change nothing
-            inspect_panels._message("Label boundary: %s" % e)
+            inspect_panels._message(translate("HoleFill", "Label boundary: %s") % e)
             task_labels.remove_overlay()
             return
         FreeCADGui.Control.showDialog(panel)
@@ -101,10 +104,10 @@ class LabelBoundaryCommand:
 class FitLabeledCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_LabeledFit.svg"),
-                "MenuText": "Fit labeled surface",
-                "ToolTip": "Fit one trimmed B-spline face to a labeled mesh region: labeled parameterization,\n"
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_FitLabeled", "Fit labeled surface"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_FitLabeled", "Fit one trimmed B-spline face to a labeled mesh region: labeled parameterization,\n"
                            "extension to the four-sided domain, tensor-product fit. Select the boundary labels\n"
-                           "(or the mesh); the fit follows the labels when they change."}
+                           "(or the mesh); the fit follows the labels when they change.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -122,10 +125,10 @@ class FitLabeledCommand:
 class FitPointCloudCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_PointFit.svg"),
-                "MenuText": "Fit point cloud",
-                "ToolTip": "Fit a B-spline face to a Points or Mesh object: boundary (found for a bare cloud),\n"
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_FitPointCloud", "Fit point cloud"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_FitPointCloud", "Fit a B-spline face to a Points or Mesh object: boundary (found for a bare cloud),\n"
                            "parameters (BIDGCN or classical), adaptive THB refinement with parameter correction\n"
-                           "until the tolerance; shows the hierarchical mesh and the point errors."}
+                           "until the tolerance; shows the hierarchical mesh and the point errors.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -143,9 +146,9 @@ class FitPointCloudCommand:
 class ImportCageCommand:
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon("HoleFill_Gnurbs.svg"),
-                "MenuText": "Import quad cage (OBJ)",
-                "ToolTip": "Read a quad cage from an OBJ file (with '# sharp i j', '# knot i j d', '# anchor i x y z'\n"
-                           "lines) as a shell of quads, and open G-NURBS surface on it with those marks."}
+                "MenuText": QT_TRANSLATE_NOOP("HoleFill_ImportCage", "Import quad cage (OBJ)"),
+                "ToolTip": QT_TRANSLATE_NOOP("HoleFill_ImportCage", "Read a quad cage from an OBJ file (with '# sharp i j', '# knot i j d', '# anchor i x y z'\n"
+                           "lines) as a shell of quads, and open G-NURBS surface on it with those marks.")}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -162,14 +165,14 @@ class ImportCageCommand:
             FreeCADGui.SendMsgToActiveView("ViewFit")
             panel = task_gnurbs.GnurbsPanel(obj, cage["sharpEdges"], cage["anchors"], cage["knots"])
         except Exception as e:
-            inspect_panels._message("Import quad cage: %s" % e)
+            inspect_panels._message(translate("HoleFill", "Import quad cage: %s") % e)
             return
         FreeCADGui.Control.showDialog(panel)
 
 
 class _InspectCommand:
     """Opens the panel on the selection; when the overlay of its kind is shown, removes it (toggle)."""
-    kind = menu = tip = icon = None
+    kind = menu = tip = icon = context = None  # context: the command's name, the translations' context
 
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon(self.icon), "MenuText": self.menu, "ToolTip": self.tip}
@@ -189,33 +192,36 @@ class _InspectCommand:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # a core error on this shape: say it, change nothing
-            inspect_panels._message("%s failed: %s" % (self.menu, e))
+            inspect_panels._message(translate("HoleFill", "%s failed: %s") % (translate(self.context, self.menu), e))
             inspection_overlay.remove(self.kind)
             return
         FreeCADGui.Control.showDialog(panel)
 
 
 class CurvatureMapCommand(_InspectCommand):
-    kind, menu, icon = "Curvature", "Curvature map", "HoleFill_Curvature.svg"
-    tip = ("Colour the selected faces or objects by mean, Gaussian or principal curvature, computed from the\n"
-           "exact surfaces. Run again to remove the colours.")
+    context = "HoleFill_CurvatureMap"
+    kind, menu, icon = "Curvature", QT_TRANSLATE_NOOP("HoleFill_CurvatureMap", "Curvature map"), "HoleFill_Curvature.svg"
+    tip = QT_TRANSLATE_NOOP("HoleFill_CurvatureMap", ("Colour the selected faces or objects by mean, Gaussian or principal curvature, computed from the\n"
+           "exact surfaces. Run again to remove the colours."))
 
     def panel(self, panels, overlay):
         return panels.CurvaturePanel(overlay.targets_from_selection())
 
 
 class ZebraStripesCommand(_InspectCommand):
-    kind, menu, icon = "Zebra", "Zebra stripes", "HoleFill_Zebra.svg"
-    tip = ("Reflection lines (follow the view) or isophotes on the selected faces or objects: a stripe that\n"
-           "breaks shows a G1 break, a kink a G2 break. Run again to remove them.")
+    context = "HoleFill_ZebraStripes"
+    kind, menu, icon = "Zebra", QT_TRANSLATE_NOOP("HoleFill_ZebraStripes", "Zebra stripes"), "HoleFill_Zebra.svg"
+    tip = QT_TRANSLATE_NOOP("HoleFill_ZebraStripes", ("Reflection lines (follow the view) or isophotes on the selected faces or objects: a stripe that\n"
+           "breaks shows a G1 break, a kink a G2 break. Run again to remove them."))
 
     def panel(self, panels, overlay):
         return panels.ZebraPanel(overlay.targets_from_selection())
 
 
 class ContinuityCheckCommand(_InspectCommand):
-    kind, menu, icon = "Continuity", "Continuity check", "HoleFill_Continuity.svg"
-    tip = "Select two adjacent faces or a Fill object: G0/G1/G2 along the shared boundary, drawn in colour."
+    context = "HoleFill_ContinuityCheck"
+    kind, menu, icon = "Continuity", QT_TRANSLATE_NOOP("HoleFill_ContinuityCheck", "Continuity check"), "HoleFill_Continuity.svg"
+    tip = QT_TRANSLATE_NOOP("HoleFill_ContinuityCheck", "Select two adjacent faces or a Fill object: G0/G1/G2 along the shared boundary, drawn in colour.")
 
     def panel(self, panels, overlay):
         return panels.ContinuityPanel(*panels.continuity_target())

@@ -10,11 +10,13 @@ from PySide2 import QtCore, QtGui, QtWidgets
 
 from HoleFillGui import inspection_overlay as overlay
 
+translate = FreeCAD.Qt.translate
+
 
 def _message(text):
     FreeCAD.Console.PrintError("HoleFill: %s\n" % text)
     if FreeCAD.GuiUp and not getattr(FreeCADGui, "HoleFillQuiet", False):
-        QtWidgets.QMessageBox.warning(FreeCADGui.getMainWindow(), "HoleFill", text)
+        QtWidgets.QMessageBox.warning(FreeCADGui.getMainWindow(), translate("HoleFill", "HoleFill"), text)
 
 
 class _Panel:
@@ -48,7 +50,7 @@ class _Panel:
                 lines.append(self.applyTo(obj, faces))
             self.status.setText("\n".join(lines))
         except Exception as e:
-            self.status.setText("Failed: %s" % e)
+            self.status.setText(translate("HoleFill", "Failed: %s") % e)
             FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
         finally:
             QtWidgets.QApplication.restoreOverrideCursor()
@@ -99,7 +101,7 @@ class CurvaturePanel(_Panel):
 
     def __init__(self, targets):
         super().__init__(targets)
-        self.form.setWindowTitle("Curvature map")
+        self.form.setWindowTitle(translate("HoleFill", "Curvature map"))
         self.quantity = QtWidgets.QComboBox()
         for k, v in self.TITLES.items():
             self.quantity.addItem(v, k)
@@ -111,10 +113,10 @@ class CurvaturePanel(_Panel):
             s.setRange(-1e6, 1e6)
             s.setValue(v)
         self.legend = LegendWidget()
-        self.layout.addRow("Quantity", self.quantity)
-        self.layout.addRow("Colour range", self.clamp)
-        self.layout.addRow("Low", self.low)
-        self.layout.addRow("High", self.high)
+        self.layout.addRow(translate("HoleFill", "Quantity"), self.quantity)
+        self.layout.addRow(translate("HoleFill", "Colour range"), self.clamp)
+        self.layout.addRow(translate("HoleFill", "Low"), self.low)
+        self.layout.addRow(translate("HoleFill", "High"), self.high)
         self.layout.addRow(self.legend)
         self.layout.addRow(self.status)
         self.quantity.currentIndexChanged.connect(self.apply)
@@ -151,7 +153,7 @@ class ZebraPanel(_Panel):
 
     def __init__(self, targets):
         super().__init__(targets)
-        self.form.setWindowTitle("Zebra stripes")
+        self.form.setWindowTitle(translate("HoleFill", "Zebra stripes"))
         self.mode = QtWidgets.QComboBox()
         self.mode.addItems(["Reflection lines (follow the view)", "Isophotes (fixed)"])
         self.count = QtWidgets.QSpinBox()
@@ -163,11 +165,11 @@ class ZebraPanel(_Panel):
         self.width.setValue(0.5)
         self.angle = QtWidgets.QDoubleSpinBox()
         self.angle.setRange(-180, 180)
-        self.angle.setSuffix(" deg")
-        self.layout.addRow("Stripes", self.mode)
-        self.layout.addRow("Count", self.count)
-        self.layout.addRow("Black share", self.width)
-        self.layout.addRow("Direction", self.angle)
+        self.angle.setSuffix(translate("HoleFill", " deg"))
+        self.layout.addRow(translate("HoleFill", "Stripes"), self.mode)
+        self.layout.addRow(translate("HoleFill", "Count"), self.count)
+        self.layout.addRow(translate("HoleFill", "Black share"), self.width)
+        self.layout.addRow(translate("HoleFill", "Direction"), self.angle)
         self.layout.addRow(self.status)
         for w in (self.mode,):
             w.currentIndexChanged.connect(self.apply)
@@ -191,24 +193,24 @@ def continuity_target():
     import HoleFill
     sel = FreeCADGui.Selection.getSelectionEx()
     if not sel:
-        raise overlay.SelectionError("Select two adjacent faces, or a Fill object.")
+        raise overlay.SelectionError(translate("HoleFill", "Select two adjacent faces, or a Fill object."))
     if len(sel) == 1 and hasattr(sel[0].Object, "Proxy") and sel[0].Object.TypeId == "Part::FeaturePython" \
             and hasattr(sel[0].Object, "Source") and not sel[0].SubElementNames:
         fill = sel[0].Object
         src, subs = fill.Source if fill.Source else (None, [])
         if src is None or fill.Shape.isNull():
-            raise overlay.SelectionError("%s has no result to check: recompute it first." % fill.Label)
+            raise overlay.SelectionError(translate("HoleFill", "%s has no result to check: recompute it first.") % fill.Label)
         edges = [int(s[4:]) for s in subs if s.startswith("Edge")]
         face = fill.Shape.Faces[0] if fill.Output == "Face" else _patch_of(fill.Shape, src.Shape)
         return fill, HoleFill.continuityAlong(face, src.Shape, edges or HoleFill.findHoles(src.Shape)[0]["edge_indices"])
     faces = [(s.Object, n) for s in sel for n in s.SubElementNames if n.startswith("Face")]
     if any(s.Object.isDerivedFrom("Mesh::Feature") for s in sel):
-        raise overlay.SelectionError("A mesh is selected: the continuity check works on B-rep faces.")
+        raise overlay.SelectionError(translate("HoleFill", "A mesh is selected: the continuity check works on B-rep faces."))
     if len(faces) != 2:
-        raise overlay.SelectionError("Select exactly two adjacent faces (Ctrl+click), or one Fill object; "
-                                     "%d face(s) are selected." % len(faces))
+        raise overlay.SelectionError(translate("HoleFill", "Select exactly two adjacent faces (Ctrl+click), or one Fill object; "
+                                     "%d face(s) are selected.") % len(faces))
     if faces[0][0] != faces[1][0]:
-        raise overlay.SelectionError("The two faces belong to different objects: select two faces of one shape.")
+        raise overlay.SelectionError(translate("HoleFill", "The two faces belong to different objects: select two faces of one shape."))
     obj = faces[0][0]
     return obj, HoleFill.faceContinuity(obj.Shape, faces[0][1], faces[1][1])
 
@@ -218,7 +220,7 @@ def _patch_of(sewn, source):
     areas = [f.Area for f in source.Faces]
     new = [f for f in sewn.Faces if not any(abs(f.Area - a) <= 1e-9 * max(1.0, a) for a in areas)]
     if len(new) != 1:
-        raise overlay.SelectionError("cannot tell the patch among the sewn faces: set the Fill's Output to Face")
+        raise overlay.SelectionError(translate("HoleFill", "cannot tell the patch among the sewn faces: set the Fill's Output to Face"))
     return new[0]
 
 
@@ -227,10 +229,10 @@ class ContinuityPanel(_Panel):
 
     def __init__(self, obj, report):
         super().__init__([])
-        self.form.setWindowTitle("Continuity check")
+        self.form.setWindowTitle(translate("HoleFill", "Continuity check"))
         self.report = report
         self.table = QtWidgets.QTableWidget(0, 4)
-        self.table.setHorizontalHeaderLabels(["Edge", "G0", "G1 (rad)", "G2"])
+        self.table.setHorizontalHeaderLabels([translate("HoleFill", "Edge"), "G0", translate("HoleFill", "G1 (rad)"), "G2"])
         rows = [("all", report["g0"], report["g1"], report["g2"])] + \
                [("Edge%d" % e["edge"], e["g0"], e["g1"], e["g2"]) for e in report["per_edge"]]
         self.table.setRowCount(len(rows))
@@ -238,12 +240,12 @@ class ContinuityPanel(_Panel):
             for j, v in enumerate(r):
                 self.table.setItem(i, j, QtWidgets.QTableWidgetItem(v if j == 0 else "%.3g" % v))
         s = report["str"]
-        summary = ("Scale %.4g, %d samples. G0 %.3g (%.2g of scale): %s. G1 %.3g rad: %s. G2 %.3g: %s.\n"
-                   "Boundary colours: green G2 (<= 0.1), yellow G1 (<= 1e-3 rad), orange G0 only, red gap." % (
+        summary = (translate("HoleFill", "Scale %.4g, %d samples. G0 %.3g (%.2g of scale): %s. G1 %.3g rad: %s. G2 %.3g: %s.\n"
+                   "Boundary colours: green G2 (<= 0.1), yellow G1 (<= 1e-3 rad), orange G0 only, red gap.") % (
                        report["scale"], report["samples"], report["g0"], report["g0_relative"],
-                       "strict" if s["g0_strict"] else ("loose" if s["g0_loose"] else "open"), report["g1"],
-                       "strict" if s["g1_strict"] else ("loose" if s["g1_loose"] else "broken"), report["g2"],
-                       "ok" if s["g2"] else "above 0.1"))
+                       translate("HoleFill", "strict") if s["g0_strict"] else (translate("HoleFill", "loose") if s["g0_loose"] else translate("HoleFill", "open")), report["g1"],
+                       translate("HoleFill", "strict") if s["g1_strict"] else (translate("HoleFill", "loose") if s["g1_loose"] else translate("HoleFill", "broken")), report["g2"],
+                       translate("HoleFill", "ok") if s["g2"] else translate("HoleFill", "above 0.1")))
         self.status.setText(summary)
         self.layout.addRow(self.table)
         self.layout.addRow(self.status)

@@ -15,6 +15,8 @@ from pivy import coin
 
 import HoleFill
 
+translate = FreeCAD.Qt.translate
+
 PREFIX = "HoleFillInspect"
 KINDS = ("Curvature", "Zebra", "Continuity")
 
@@ -27,22 +29,22 @@ def targets_from_selection(allow_whole_objects=True):
     """[(object, [face indices] or None for all faces)] from the selection; SelectionError otherwise."""
     sel = FreeCADGui.Selection.getSelectionEx()
     if not sel:
-        raise SelectionError("Select faces or Part objects first (e.g. a Fill result).")
+        raise SelectionError(translate("HoleFill", "Select faces or Part objects first (e.g. a Fill result)."))
     out = []
     for s in sel:
         obj = s.Object
         if obj.isDerivedFrom("Mesh::Feature"):
-            raise SelectionError("%s is a mesh: curvature maps and zebra stripes here work on B-rep faces. "
-                                 "For meshes use Mesh > Curvature plot." % obj.Label)
+            raise SelectionError(translate("HoleFill", "%s is a mesh: curvature maps and zebra stripes here work on B-rep faces. "
+                                 "For meshes use Mesh > Curvature plot.") % obj.Label)
         shape = getattr(obj, "Shape", None)
         if shape is None or shape.isNull() or not shape.Faces:
-            raise SelectionError("%s has no faces to inspect." % obj.Label)
+            raise SelectionError(translate("HoleFill", "%s has no faces to inspect.") % obj.Label)
         subs = list(s.SubElementNames)
         faces = [int(n[4:]) for n in subs if n.startswith("Face")]
         if subs and not faces:
-            raise SelectionError("Only edges or vertices of %s are selected: select faces or the whole object." % obj.Label)
+            raise SelectionError(translate("HoleFill", "Only edges or vertices of %s are selected: select faces or the whole object.") % obj.Label)
         if not faces and not allow_whole_objects:
-            raise SelectionError("Select faces of %s." % obj.Label)
+            raise SelectionError(translate("HoleFill", "Select faces of %s.") % obj.Label)
         out.append((obj, faces or None))
     return out
 
@@ -50,7 +52,7 @@ def targets_from_selection(allow_whole_objects=True):
 def _view():
     gdoc = FreeCADGui.ActiveDocument
     if gdoc is None or not hasattr(gdoc.ActiveView, "getSceneGraph"):
-        raise SelectionError("No 3D view is open.")
+        raise SelectionError(translate("HoleFill", "No 3D view is open."))
     return gdoc.ActiveView
 
 
@@ -75,7 +77,7 @@ def bounded_mesh(obj, faces, maxNormalAngle=2.0, what="Tessellating"):
     progress dialog; cancelling raises HoleFillError. A mesh that stopped at a bound carries
     stoppedByBudget and its warnings, which go to the report view."""
     from PySide2 import QtCore, QtWidgets
-    dlg = QtWidgets.QProgressDialog("%s %s..." % (what, obj.Label), "Cancel", 0, 100, FreeCADGui.getMainWindow())
+    dlg = QtWidgets.QProgressDialog("%s %s..." % (what, obj.Label), translate("HoleFill", "Cancel"), 0, 100, FreeCADGui.getMainWindow())
     dlg.setWindowModality(QtCore.Qt.WindowModal)
     dlg.setMinimumDuration(500)
 

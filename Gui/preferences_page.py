@@ -1,9 +1,12 @@
 """Edit → Preferences → HoleFill: the task panels' starting values (HoleFill/preferences.py holds
 them and their defaults). Registered at FreeCAD's start by InitGui.py, so the page is there before
 the workbench is first activated."""
+import FreeCAD
 from PySide2 import QtWidgets
 
 from HoleFill import preferences
+
+translate = FreeCAD.Qt.translate
 
 
 class PreferencePage:
@@ -12,13 +15,14 @@ class PreferencePage:
 
     def __init__(self, parent=None):
         self.form = QtWidgets.QWidget(parent)
-        self.form.setWindowTitle("HoleFill")
+        self.form.setWindowTitle(translate("HoleFill", "HoleFill"))
         self.form.setObjectName("HoleFillPreferences")
         outer = QtWidgets.QVBoxLayout(self.form)
-        box = QtWidgets.QGroupBox("Fill hole: starting values of the task panel")
+        box = QtWidgets.QGroupBox(translate("HoleFill", "Fill hole: starting values of the task panel"))
         lay = QtWidgets.QFormLayout(box)
         self.widgets = {}
-        for name, label in (("FillMethod", "Parameterization:"), ("FillContinuity", "Continuity:"), ("FillOutput", "Output:")):
+        for name, label in (("FillMethod", translate("HoleFill", "Parameterization:")), ("FillContinuity", translate("HoleFill", "Continuity:")),
+                            ("FillOutput", translate("HoleFill", "Output:"))):
             w = QtWidgets.QComboBox()
             w.setObjectName(name)
             w.addItems(list(preferences.CHOICES[name]))
@@ -28,17 +32,17 @@ class PreferencePage:
         tol = QtWidgets.QDoubleSpinBox()
         tol.setDecimals(7)
         tol.setRange(0.0, 1e3)
-        tol.setSpecialValueText("auto (1e-6 of hole size)")
+        tol.setSpecialValueText(translate("HoleFill", "auto (1e-6 of hole size)"))
         tol.setToolTip(preferences.SETTINGS["FillTolerance"][1])
-        lay.addRow("G0 tolerance:", tol)
+        lay.addRow(translate("HoleFill", "G0 tolerance:"), tol)
         self.widgets["FillTolerance"] = tol
         ang = QtWidgets.QDoubleSpinBox()
         ang.setDecimals(6)
         ang.setRange(1e-6, 0.5)
         ang.setSingleStep(1e-4)
-        ang.setSuffix(" rad")
+        ang.setSuffix(translate("HoleFill", " rad"))
         ang.setToolTip(preferences.SETTINGS["FillAngularTolerance"][1])
-        lay.addRow("G1 tolerance:", ang)
+        lay.addRow(translate("HoleFill", "G1 tolerance:"), ang)
         self.widgets["FillAngularTolerance"] = ang
         outer.addWidget(box)
         outer.addStretch(1)

@@ -4,6 +4,8 @@ stays open (the make* functions leave the document as it was)."""
 import FreeCAD
 from PySide2 import QtCore, QtWidgets
 
+translate = FreeCAD.Qt.translate
+
 
 def create(status, make):
     """make() under a wait cursor; its result, or None after showing the error in `status`."""
@@ -11,7 +13,7 @@ def create(status, make):
     try:
         return make()
     except Exception as e:
-        status.setText("Failed: %s" % e)
+        status.setText(translate("HoleFill", "Failed: %s") % e)
         FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
         return None
     finally:

@@ -10,6 +10,8 @@ from PySide2 import QtCore, QtWidgets
 import HoleFill
 from HoleFill import fill_feature, preferences
 
+translate = FreeCAD.Qt.translate
+
 
 def _selectedHole():
     """(object, [edge names]) from the current selection, or (None, [])."""
@@ -47,30 +49,30 @@ class FillTaskPanel:
         self.doc = FreeCAD.ActiveDocument
         self.obj = existing
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("Fill hole")
+        self.form.setWindowTitle(translate("HoleFill", "Fill hole"))
         lay = QtWidgets.QFormLayout(self.form)
         self.holeLabel = QtWidgets.QLabel()
         self.holeLabel.setWordWrap(True)
-        lay.addRow("Hole:", self.holeLabel)
-        self.useSel = QtWidgets.QPushButton("Use selected edges")
+        lay.addRow(translate("HoleFill", "Hole:"), self.holeLabel)
+        self.useSel = QtWidgets.QPushButton(translate("HoleFill", "Use selected edges"))
         lay.addRow(self.useSel)
         self.method = QtWidgets.QComboBox()
         self.method.addItems(list(HoleFill.METHODS))
-        self.method.setToolTip("auto: np or mvc, whichever distorts the boundary less;\n"
+        self.method.setToolTip(translate("HoleFill", "auto: np or mvc, whichever distorts the boundary less;\n"
                                "np: nearest plane projection; mvc: regular N-gon with mean value mapping;\n"
-                               "uvtran: learned projection surface (falls back to mvc, and says so, if it cannot)")
-        lay.addRow("Parameterization:", self.method)
-        self.showProjection = QtWidgets.QCheckBox("Show UVTran projection surface")
-        self.showProjection.setToolTip("Overlay the surface UVTran predicts for this hole (view only)")
+                               "uvtran: learned projection surface (falls back to mvc, and says so, if it cannot)"))
+        lay.addRow(translate("HoleFill", "Parameterization:"), self.method)
+        self.showProjection = QtWidgets.QCheckBox(translate("HoleFill", "Show UVTran projection surface"))
+        self.showProjection.setToolTip(translate("HoleFill", "Overlay the surface UVTran predicts for this hole (view only)"))
         lay.addRow(self.showProjection)
         self.continuity = QtWidgets.QComboBox()
         self.continuity.addItems(["G0", "G1", "G2"])
         self.continuity.setCurrentText("G1")
-        lay.addRow("Continuity:", self.continuity)
+        lay.addRow(translate("HoleFill", "Continuity:"), self.continuity)
         # One row per loop edge: what to ask of it (auto = the continuity above, G0 on creases found
         # at the hole's corners) and, after a preview, what was asked and reached there.
         self.edgeTable = QtWidgets.QTableWidget(0, 3)
-        self.edgeTable.setHorizontalHeaderLabels(["Edge", "Ask", "Asked / reached"])
+        self.edgeTable.setHorizontalHeaderLabels([translate("HoleFill", "Edge"), translate("HoleFill", "Ask"), translate("HoleFill", "Asked / reached")])
         self.edgeTable.horizontalHeader().setStretchLastSection(True)
         self.edgeTable.verticalHeader().setVisible(False)
         self.edgeTable.setMinimumHeight(110)
@@ -78,12 +80,12 @@ class FillTaskPanel:
         self.tolerance = QtWidgets.QDoubleSpinBox()
         self.tolerance.setDecimals(7)
         self.tolerance.setRange(0.0, 1e3)
-        self.tolerance.setSpecialValueText("auto (1e-6 of hole size)")
-        lay.addRow("G0 tolerance:", self.tolerance)
+        self.tolerance.setSpecialValueText(translate("HoleFill", "auto (1e-6 of hole size)"))
+        lay.addRow(translate("HoleFill", "G0 tolerance:"), self.tolerance)
         self.output = QtWidgets.QComboBox()
         self.output.addItems(["Face", "Sewn"])
-        lay.addRow("Output:", self.output)
-        self.preview = QtWidgets.QPushButton("Preview")
+        lay.addRow(translate("HoleFill", "Output:"), self.output)
+        self.preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
         lay.addRow(self.preview)
         self.report = QtWidgets.QPlainTextEdit()
         self.report.setReadOnly(True)
@@ -129,7 +131,7 @@ class FillTaskPanel:
 
     def showHole(self):
         if self.source is None:
-            self.holeLabel.setText("Select one edge of a hole in the 3D view, then press 'Use selected edges'.")
+            self.holeLabel.setText(translate("HoleFill", "Select one edge of a hole in the 3D view, then press 'Use selected edges'."))
             return
         try:
             holes = HoleFill.findHoles(self.source.Shape, includeOuter=True)
@@ -139,10 +141,10 @@ class FillTaskPanel:
             hole = None
             self.report.setPlainText(str(e))
         if hole is None:
-            self.holeLabel.setText("%s: %s is not on one hole loop" % (self.source.Label, ", ".join(self.edges)))
+            self.holeLabel.setText(translate("HoleFill", "%s: %s is not on one hole loop") % (self.source.Label, ", ".join(self.edges)))
             self.edgeTable.setRowCount(0)
         else:
-            self.holeLabel.setText("%s: %d-sided hole, %d edges (%s)" % (
+            self.holeLabel.setText(translate("HoleFill", "%s: %d-sided hole, %d edges (%s)") % (
                 self.source.Label, hole["corners"], len(hole["edges"]), ", ".join(hole["edges"])))
             if [self.edgeTable.item(r, 0).text() for r in range(self.edgeTable.rowCount())] != hole["edges"]:
                 self.edgeTable.setRowCount(len(hole["edges"]))
@@ -180,13 +182,13 @@ class FillTaskPanel:
         try:
             face = HoleFill.projectionSurface(self.source.Shape, self.edges)
         except HoleFill.HoleFillError as e:
-            self.report.setPlainText("No projection surface: %s" % e)
+            self.report.setPlainText(translate("HoleFill", "No projection surface: %s") % e)
             return
         projection_overlay.show(face)
 
     def runPreview(self):
         if self.source is None:
-            self.report.setPlainText("No hole selected: click an edge of the hole first.")
+            self.report.setPlainText(translate("HoleFill", "No hole selected: click an edge of the hole first."))
             return False
         if self.obj is None:
             self.obj = self.doc.addObject("Part::FeaturePython", "Fill")
@@ -201,7 +203,7 @@ class FillTaskPanel:
         self.obj.Tolerance = self.tolerance.value()
         self.obj.Output = self.output.currentText()
         self.obj.EdgeContinuity = self.edgeRequests()
-        dlg = QtWidgets.QProgressDialog("Filling hole...", "Cancel", 0, 100, self.form)
+        dlg = QtWidgets.QProgressDialog(translate("HoleFill", "Filling hole..."), translate("HoleFill", "Cancel"), 0, 100, self.form)
         dlg.setWindowModality(QtCore.Qt.WindowModal)
         dlg.setMinimumDuration(500)
 
@@ -222,7 +224,7 @@ class FillTaskPanel:
             if self.source.ViewObject is not None and self.obj.Output == "Sewn":
                 self.source.ViewObject.Visibility = False
             return True
-        self.report.setPlainText("Fill failed: %s" % (self.obj.getStatusString() or "see the report view"))
+        self.report.setPlainText(translate("HoleFill", "Fill failed: %s") % (self.obj.getStatusString() or "see the report view"))
         return False
 
     def _changedSincePreview(self):

@@ -10,6 +10,8 @@ from PySide2 import QtCore, QtWidgets
 
 from HoleFillGui import scene_overlay, task_dialog
 
+translate = FreeCAD.Qt.translate
+
 OVERLAY = "HoleFillGnurbsCage"
 COLOR_SHARP, COLOR_EP, COLOR_ANCHOR = (1.0, 0.55, 0.1), (0.9, 0.0, 0.0), (0.1, 0.3, 1.0)
 
@@ -52,25 +54,25 @@ class GnurbsPanel:
         self.knots = list(knots)
         self.sharp = {(min(a, b), max(a, b)) for a, b in sharpEdges}
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("G-NURBS surface")
+        self.form.setWindowTitle(translate("HoleFill", "G-NURBS surface"))
         layout = QtWidgets.QVBoxLayout(self.form)
         valences = ", ".join("%d (valence %d)" % (v, n) for v, n in sorted(self.eps.items())) or "none"
-        self.summary = QtWidgets.QLabel("%s: %d vertices, %d quads. Extraordinary points: %s." % (
+        self.summary = QtWidgets.QLabel(translate("HoleFill", "%s: %d vertices, %d quads. Extraordinary points: %s.") % (
             obj.Label, len(self.cage["vertices"]), len(self.cage["quads"]), valences))
         self.summary.setWordWrap(True)
         layout.addWidget(self.summary)
-        layout.addWidget(QtWidgets.QLabel("Sharp edges: click cage edges in the 3D view to mark or unmark them."))
+        layout.addWidget(QtWidgets.QLabel(translate("HoleFill", "Sharp edges: click cage edges in the 3D view to mark or unmark them.")))
         self.sharpList = QtWidgets.QListWidget()
         self.sharpList.setObjectName("HoleFillGnurbsSharp")
         layout.addWidget(self.sharpList)
-        clear = QtWidgets.QPushButton("Clear sharp edges")
+        clear = QtWidgets.QPushButton(translate("HoleFill", "Clear sharp edges"))
         clear.setObjectName("HoleFillGnurbsClearSharp")
         clear.clicked.connect(self.clearSharp)
         layout.addWidget(clear)
-        layout.addWidget(QtWidgets.QLabel("Anchors (V_EP = A_EP) at extraordinary points:"))
+        layout.addWidget(QtWidgets.QLabel(translate("HoleFill", "Anchors (V_EP = A_EP) at extraordinary points:")))
         self.anchors = QtWidgets.QTableWidget(len(self.eps), 4)
         self.anchors.setObjectName("HoleFillGnurbsAnchors")
-        self.anchors.setHorizontalHeaderLabels(["EP", "x", "y", "z"])
+        self.anchors.setHorizontalHeaderLabels([translate("HoleFill", "EP"), "x", "y", "z"])
         self.anchors.verticalHeader().setVisible(False)
         self.spins = {}
         anchors = anchors or {}
@@ -92,7 +94,7 @@ class GnurbsPanel:
             self.spins[v] = spins
         self.anchors.itemChanged.connect(lambda *_: self.redraw())
         layout.addWidget(self.anchors)
-        self.refine = QtWidgets.QCheckBox("Refine the cage once when its extraordinary points are too close")
+        self.refine = QtWidgets.QCheckBox(translate("HoleFill", "Refine the cage once when its extraordinary points are too close"))
         self.refine.setObjectName("HoleFillGnurbsRefine")
         self.refine.setChecked(True)
         layout.addWidget(self.refine)
@@ -165,7 +167,7 @@ class GnurbsPanel:
                 sep.addChild(n)
             root.addChild(sep)
         scene_overlay.show(root)
-        self.status.setText("%d sharp edges, %d anchors. OK builds the G² surface as a new object." % (len(self.sharp), len(anchors)))
+        self.status.setText(translate("HoleFill", "%d sharp edges, %d anchors. OK builds the G² surface as a new object.") % (len(self.sharp), len(anchors)))
 
     # -- dialog ------------------------------------------------------------------------------
     def getStandardButtons(self):

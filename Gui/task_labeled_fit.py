@@ -10,6 +10,8 @@ from PySide2 import QtCore, QtWidgets
 
 from HoleFillGui import scene_overlay, task_dialog
 
+translate = FreeCAD.Qt.translate
+
 OVERLAY = "HoleFillLabeledFit"
 
 
@@ -25,8 +27,8 @@ def labels_from_selection():
         found = [o for o in sel[0].Document.Objects if hasattr(o, "LabelsJson") and o.Source == sel[0]]
         if found:
             return found[-1]
-        raise SelectionError("%s has no boundary labels yet: use HoleFill → Label boundary first." % sel[0].Label)
-    raise SelectionError("Select the boundary labels of a mesh region (made by HoleFill → Label boundary), or the mesh itself.")
+        raise SelectionError(translate("HoleFill", "%s has no boundary labels yet: use HoleFill → Label boundary first.") % sel[0].Label)
+    raise SelectionError(translate("HoleFill", "Select the boundary labels of a mesh region (made by HoleFill → Label boundary), or the mesh itself."))
 
 
 def remove_overlay():
@@ -37,34 +39,34 @@ class FitPanel:
     def __init__(self, labelsObj):
         self.labels = labelsObj
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("Fit labeled surface")
+        self.form.setWindowTitle(translate("HoleFill", "Fit labeled surface"))
         layout = QtWidgets.QFormLayout(self.form)
         self.ctrlU, self.ctrlV = QtWidgets.QSpinBox(), QtWidgets.QSpinBox()
         for name, w in (("HoleFillFitCtrlU", self.ctrlU), ("HoleFillFitCtrlV", self.ctrlV)):
             w.setObjectName(name)
             w.setRange(4, 200)
             w.setValue(12)
-        layout.addRow("Control points u:", self.ctrlU)
-        layout.addRow("Control points v:", self.ctrlV)
+        layout.addRow(translate("HoleFill", "Control points u:"), self.ctrlU)
+        layout.addRow(translate("HoleFill", "Control points v:"), self.ctrlV)
         self.extension = QtWidgets.QComboBox()
         self.extension.setObjectName("HoleFillFitExtension")
         self.extension.addItems(["fit", "G2", "G1", "none"])
-        layout.addRow("Extension:", self.extension)
+        layout.addRow(translate("HoleFill", "Extension:"), self.extension)
         self.margin = QtWidgets.QSpinBox()
         self.margin.setObjectName("HoleFillFitMargin")
         self.margin.setRange(0, 50)
-        layout.addRow("Margin layers:", self.margin)
+        layout.addRow(translate("HoleFill", "Margin layers:"), self.margin)
         self.reach = QtWidgets.QDoubleSpinBox()
         self.reach.setObjectName("HoleFillFitReach")
         self.reach.setRange(0, 10)
         self.reach.setDecimals(3)
         self.reach.setSingleStep(0.05)
         self.reach.setValue(0.05)
-        self.reach.setToolTip("How far the untrimmed surface reaches past the domain, as a fraction of its larger side")
-        layout.addRow("Reach past the domain:", self.reach)
+        self.reach.setToolTip(translate("HoleFill", "How far the untrimmed surface reaches past the domain, as a fraction of its larger side"))
+        layout.addRow(translate("HoleFill", "Reach past the domain:"), self.reach)
         self.weights = {}
-        for key, label, value in (("fairness", "Isocurve fairness:", 1e-2), ("smoothing", "Thin-plate smoothing:", 1e-6),
-                                  ("framePlacement", "Frame placement:", 1.0), ("meshFairness", "Mesh fairness (E_Mesh):", 0.0)):
+        for key, label, value in (("fairness", translate("HoleFill", "Isocurve fairness:"), 1e-2), ("smoothing", translate("HoleFill", "Thin-plate smoothing:"), 1e-6),
+                                  ("framePlacement", translate("HoleFill", "Frame placement:"), 1.0), ("meshFairness", translate("HoleFill", "Mesh fairness (E_Mesh):"), 0.0)):
             w = QtWidgets.QDoubleSpinBox()
             w.setObjectName("HoleFillFit_" + key)
             w.setDecimals(8)
@@ -72,21 +74,21 @@ class FitPanel:
             w.setValue(value)
             layout.addRow(label, w)
             self.weights[key] = w
-        self.relax = QtWidgets.QCheckBox("Relax the labels where they cannot be fitted")
+        self.relax = QtWidgets.QCheckBox(translate("HoleFill", "Relax the labels where they cannot be fitted"))
         self.relax.setObjectName("HoleFillFitRelaxLabels")
-        self.relax.setToolTip("Where the fit over the labeled map misses the tolerance or has weak control points, fit over the "
-                              "region's own flattening, turned as the labels say (the report says when it did)")
+        self.relax.setToolTip(translate("HoleFill", "Where the fit over the labeled map misses the tolerance or has weak control points, fit over the "
+                              "region's own flattening, turned as the labels say (the report says when it did)"))
         self.relax.setChecked(True)
         layout.addRow(self.relax)
         self.show = {}
-        for key, label in (("frame", "Show the guiding frame"), ("extended", "Show the extended mesh"), ("surface", "Show the surface")):
+        for key, label in (("frame", translate("HoleFill", "Show the guiding frame")), ("extended", translate("HoleFill", "Show the extended mesh")), ("surface", translate("HoleFill", "Show the surface"))):
             c = QtWidgets.QCheckBox(label)
             c.setObjectName("HoleFillFitShow_" + key)
             c.setChecked(True)
             c.toggled.connect(lambda *_: self.draw())
             layout.addRow(c)
             self.show[key] = c
-        preview = QtWidgets.QPushButton("Preview")
+        preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
         preview.setObjectName("HoleFillFitPreview")
         preview.clicked.connect(self.preview)
         layout.addRow(preview)
@@ -108,14 +110,14 @@ class FitPanel:
             self.result = HoleFill.fitLabeled(self.labels.Source.Mesh, self.labels.LabelsJson, **self.options())
         except Exception as e:
             self.result = None
-            self.status.setText("Fit failed: %s" % e)
+            self.status.setText(translate("HoleFill", "Fit failed: %s") % e)
             remove_overlay()
             return
         finally:
             QtWidgets.QApplication.restoreOverrideCursor()
         r = self.result[2]
-        self.status.setText("Data max %.2e, RMS %.2e (of the region's diagonal; scan noise %.2e); %d weak control points; "
-                            "log10 condition %.1f; %d extension vertices; face %s; %.2f s%s" % (
+        self.status.setText(translate("HoleFill", "Data max %.2e, RMS %.2e (of the region's diagonal; scan noise %.2e); %d weak control points; "
+                            "log10 condition %.1f; %d extension vertices; face %s; %.2f s%s") % (
                                 r["data_max"], r["data_rms"], r["noise_estimate"], r["weak_control_points"], r["log10_condition"],
                                 r["extended_vertices"],
                                 "valid" if r["face_valid"] else "INVALID", r["seconds"],

@@ -13,6 +13,8 @@ from PySide2 import QtCore, QtWidgets
 
 from HoleFillGui import scene_overlay
 
+translate = FreeCAD.Qt.translate
+
 OVERLAY = "HoleFillLabels"
 CYCLE = ["N", "E", "S", "W", "-"]
 
@@ -28,8 +30,8 @@ def mesh_from_selection():
         return sel[0].Source, sel[0]
     meshes = [o for o in sel if hasattr(o, "Mesh") and hasattr(o.Mesh, "CountFacets")]
     if len(meshes) != 1:
-        raise SelectionError("Select one mesh region (a Mesh object with an open boundary) to label its boundary."
-                             + (" The selection holds no mesh." if sel and not meshes else ""))
+        raise SelectionError(translate("HoleFill", "Select one mesh region (a Mesh object with an open boundary) to label its boundary.")
+                             + (translate("HoleFill", " The selection holds no mesh.") if sel and not meshes else ""))
     return meshes[0], None
 
 
@@ -53,32 +55,32 @@ class LabelPanel:
             self.splits = set(cornerSplits(self.points, cornerAngle))
             self.labelAt = {}
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("Label boundary")
+        self.form.setWindowTitle(translate("HoleFill", "Label boundary"))
         layout = QtWidgets.QVBoxLayout(self.form)
-        self.summary = QtWidgets.QLabel("%s: boundary of %d vertices." % (meshObj.Label, n))
+        self.summary = QtWidgets.QLabel(translate("HoleFill", "%s: boundary of %d vertices.") % (meshObj.Label, n))
         self.summary.setWordWrap(True)
         layout.addWidget(self.summary)
-        help = QtWidgets.QLabel("Click near a boundary edge to cycle its segment's label N → E → S → W → none. "
+        help = QtWidgets.QLabel(translate("HoleFill", "Click near a boundary edge to cycle its segment's label N → E → S → W → none. "
                                 "Click on a boundary vertex to split a segment there, or on a split to merge. "
-                                "Going anticlockwise around the region the labels must run S, E, N, W.")
+                                "Going anticlockwise around the region the labels must run S, E, N, W."))
         help.setWordWrap(True)
         layout.addWidget(help)
         self.segmentList = QtWidgets.QListWidget()
         self.segmentList.setObjectName("HoleFillLabelSegments")
         layout.addWidget(self.segmentList)
         row = QtWidgets.QHBoxLayout()
-        row.addWidget(QtWidgets.QLabel("Corner angle (°):"))
+        row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Corner angle (°):")))
         self.angle = QtWidgets.QDoubleSpinBox()
         self.angle.setObjectName("HoleFillLabelCornerAngle")
         self.angle.setRange(5, 175)
         self.angle.setValue(cornerAngle)
         row.addWidget(self.angle)
-        resplit = QtWidgets.QPushButton("Split at corners")
+        resplit = QtWidgets.QPushButton(translate("HoleFill", "Split at corners"))
         resplit.setObjectName("HoleFillLabelResplit")
         resplit.clicked.connect(self.splitAtCorners)
         row.addWidget(resplit)
         layout.addLayout(row)
-        clear = QtWidgets.QPushButton("Clear labels")
+        clear = QtWidgets.QPushButton(translate("HoleFill", "Clear labels"))
         clear.setObjectName("HoleFillLabelClear")
         clear.clicked.connect(self.clearLabels)
         layout.addWidget(clear)
@@ -135,7 +137,7 @@ class LabelPanel:
             return
         e = min(range(n), key=lambda i: self._segmentDistance(p, self.points[i], self.points[(i + 1) % n]))
         if self._segmentDistance(p, self.points[e], self.points[(e + 1) % n]) > 2 * self.edgeLength:
-            self.status.setText("That click was not near the boundary.")
+            self.status.setText(translate("HoleFill", "That click was not near the boundary."))
             return
         self.cycleEdge(e)
 
@@ -220,7 +222,7 @@ class LabelPanel:
             root.addChild(sep)
         scene_overlay.show(root)
         labeled = sum(1 for l in self.labels() if l != "-")
-        self.status.setText("%d segments, %d labeled. OK stores the labels; then use Fit labeled surface." % (len(self.segments()), labeled))
+        self.status.setText(translate("HoleFill", "%d segments, %d labeled. OK stores the labels; then use Fit labeled surface.") % (len(self.segments()), labeled))
 
     # -- dialog ------------------------------------------------------------------------------
     def getStandardButtons(self):
@@ -236,7 +238,7 @@ class LabelPanel:
         import HoleFill
         labels = self.labels()
         if sum(1 for l in labels if l != "-") < 2:
-            self.status.setText("Label at least two segments (a fit needs two sides of its four-sided domain).")
+            self.status.setText(translate("HoleFill", "Label at least two segments (a fit needs two sides of its four-sided domain)."))
             return False
         try:
             if self.existing is not None:
@@ -251,7 +253,7 @@ class LabelPanel:
             else:
                 obj = HoleFill.makeBoundaryLabels(self.obj, splits=sorted(self.splits), labels=labels)
         except Exception as e:
-            self.status.setText("Failed: %s" % e)
+            self.status.setText(translate("HoleFill", "Failed: %s") % e)
             FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
             return False
         FreeCAD.Console.PrintMessage("HoleFill: %s labels %s: %s\n" % (obj.Label, self.obj.Label, " ".join(l for l in labels)))

@@ -9,6 +9,8 @@ from PySide2 import QtCore, QtWidgets
 
 from HoleFillGui import scene_overlay, task_dialog
 
+translate = FreeCAD.Qt.translate
+
 OVERLAY = "HoleFillMeshHoles"
 COLOR_FILL, COLOR_SKIP, COLOR_PICKED = (1.0, 0.55, 0.1), (0.55, 0.55, 0.55), (0.9, 0.0, 0.0)
 
@@ -27,8 +29,8 @@ def mesh_from_selection():
     sel = FreeCADGui.Selection.getSelection()
     meshes = [o for o in sel if o.isDerivedFrom("Mesh::Feature")]
     if len(meshes) != 1:
-        raise SelectionError("Select one mesh object (a Mesh feature, e.g. an imported STL/OBJ/PLY/OFF), "
-                             "then run Fill mesh holes." + (" The selection holds no mesh." if sel and not meshes else ""))
+        raise SelectionError(translate("HoleFill", "Select one mesh object (a Mesh feature, e.g. an imported STL/OBJ/PLY/OFF), "
+                             "then run Fill mesh holes.") + (translate("HoleFill", " The selection holds no mesh.") if sel and not meshes else ""))
     return meshes[0]
 
 
@@ -42,7 +44,7 @@ class MeshFillPanel:
         self.obj = obj
         self.holes = HoleFill.meshHoles(obj.Mesh)
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("Fill mesh holes")
+        self.form.setWindowTitle(translate("HoleFill", "Fill mesh holes"))
         layout = QtWidgets.QVBoxLayout(self.form)
         fillable = [hh for hh in self.holes if hh["fillable"]]
         self.summary = QtWidgets.QLabel("%s: %d holes, %d fillable. Check the holes to fill." % (
@@ -51,7 +53,7 @@ class MeshFillPanel:
         layout.addWidget(self.summary)
         self.table = QtWidgets.QTableWidget(len(self.holes), 4)
         self.table.setObjectName("HoleFillMeshHoleTable")
-        self.table.setHorizontalHeaderLabels(["Hole", "Vertices", "Length", "Note"])
+        self.table.setHorizontalHeaderLabels([translate("HoleFill", "Hole"), translate("HoleFill", "Vertices"), translate("HoleFill", "Length"), translate("HoleFill", "Note")])
         self.table.setSelectionBehavior(QtWidgets.QAbstractItemView.SelectRows)
         self.table.verticalHeader().setVisible(False)
         for r, hole in enumerate(self.holes):
@@ -71,22 +73,22 @@ class MeshFillPanel:
         self.shape.setObjectName("HoleFillMeshFillShape")
         for label, _ in SHAPES:
             self.shape.addItem(label)
-        self.shape.setToolTip("Hu et al.'s pipeline (minimum-angle triangulation, thin-plate placement, 3 bilateral\n"
+        self.shape.setToolTip(translate("HoleFill", "Hu et al.'s pipeline (minimum-angle triangulation, thin-plate placement, 3 bilateral\n"
                               "iterations), or the variant that measured closest to the cut-away surface in the\n"
-                              "benchmark (triangulation chosen per hole, smoother placement, no bilateral filter)")
-        shape_row.addWidget(QtWidgets.QLabel("Shape"))
+                              "benchmark (triangulation chosen per hole, smoother placement, no bilateral filter)"))
+        shape_row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Shape")))
         shape_row.addWidget(self.shape)
         layout.addLayout(shape_row)
         row = QtWidgets.QHBoxLayout()
         self.maxBoundary = QtWidgets.QSpinBox()
         self.maxBoundary.setObjectName("HoleFillMaxBoundary")
         self.maxBoundary.setRange(0, 10000000)
-        self.maxBoundary.setSpecialValueText("no limit")
+        self.maxBoundary.setSpecialValueText(translate("HoleFill", "no limit"))
         self.maxBoundary.setValue(HoleFill.defaultMaxBoundary())
-        self.maxBoundary.setToolTip("Uncheck holes with more boundary vertices than this (e.g. the border of an open scan);\n"
+        self.maxBoundary.setToolTip(translate("HoleFill", "Uncheck holes with more boundary vertices than this (e.g. the border of an open scan);\n"
                                     "a checked hole past it stays open. The fill's time grows faster than the boundary:\n"
-                                    "about 2 s for 5,000 vertices, a minute for 20,000")
-        row.addWidget(QtWidgets.QLabel("Max boundary vertices"))
+                                    "about 2 s for 5,000 vertices, a minute for 20,000"))
+        row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Max boundary vertices")))
         row.addWidget(self.maxBoundary)
         layout.addLayout(row)
         self.status = QtWidgets.QLabel()
@@ -132,7 +134,7 @@ class MeshFillPanel:
                 sep.addChild(n)
             root.addChild(sep)
         scene_overlay.show(root)
-        self.status.setText("%d of %d holes will be filled into a new mesh object." % (len(checked), len(self.holes)))
+        self.status.setText(translate("HoleFill", "%d of %d holes will be filled into a new mesh object.") % (len(checked), len(self.holes)))
 
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
@@ -141,7 +143,7 @@ class MeshFillPanel:
         import HoleFill
         holes = self.checked()
         if not holes:
-            self.status.setText("No hole is checked: check the holes to fill, or Cancel.")
+            self.status.setText(translate("HoleFill", "No hole is checked: check the holes to fill, or Cancel."))
             return False
         feature = task_dialog.create(self.status, lambda: HoleFill.makeMeshFill(self.obj, holes=holes, maxBoundary=self.maxBoundary.value(), **SHAPES[self.shape.currentIndex()][1]))
         if feature is None:

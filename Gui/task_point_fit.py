@@ -11,6 +11,8 @@ from PySide2 import QtCore, QtWidgets
 
 from HoleFillGui import scene_overlay, task_dialog
 
+translate = FreeCAD.Qt.translate
+
 OVERLAY = "HoleFillPointFit"
 LEVEL_COLOURS = [(0.1, 0.1, 0.1), (0.1, 0.3, 0.9), (0.0, 0.6, 0.3), (0.85, 0.5, 0.0), (0.8, 0.1, 0.6), (0.6, 0.0, 0.0)]
 
@@ -23,7 +25,7 @@ def source_from_selection():
     sel = FreeCADGui.Selection.getSelection()
     if len(sel) == 1 and ((hasattr(sel[0], "Points") and hasattr(sel[0].Points, "Points")) or hasattr(sel[0], "Mesh")):
         return sel[0]
-    raise SelectionError("Select one Points or Mesh object to fit a surface to.")
+    raise SelectionError(translate("HoleFill", "Select one Points or Mesh object to fit a surface to."))
 
 
 def remove_overlay():
@@ -47,38 +49,38 @@ class FitPanel:
         hi = [max(p[k] for p in self.xyz) for k in range(3)]
         self.diagonal = sum((a - b) ** 2 for a, b in zip(hi, lo)) ** 0.5
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("Fit point cloud")
+        self.form.setWindowTitle(translate("HoleFill", "Fit point cloud"))
         layout = QtWidgets.QFormLayout(self.form)
         self.method = QtWidgets.QComboBox()
         self.method.setObjectName("HoleFillPointFitMethod")
         self.method.addItems(["shape", "bidgcn", "invdist", "uniform"])
-        self.method.setToolTip("bidgcn: the learned parameterizer; shape: shape-preserving (Floater); invdist, uniform: weights")
-        layout.addRow("Parameterization:", self.method)
+        self.method.setToolTip(translate("HoleFill", "bidgcn: the learned parameterizer; shape: shape-preserving (Floater); invdist, uniform: weights"))
+        layout.addRow(translate("HoleFill", "Parameterization:"), self.method)
         self.tolerance = QtWidgets.QDoubleSpinBox()
         self.tolerance.setObjectName("HoleFillPointFitTolerance")
         self.tolerance.setDecimals(6)
         self.tolerance.setRange(1e-6, 1e6)
         self.tolerance.setValue(float("%.3g" % (1e-3 * self.diagonal)))
-        self.tolerance.setSuffix(" mm")
-        layout.addRow("Tolerance:", self.tolerance)
+        self.tolerance.setSuffix(translate("HoleFill", " mm"))
+        layout.addRow(translate("HoleFill", "Tolerance:"), self.tolerance)
         self.degree = QtWidgets.QSpinBox()
         self.degree.setObjectName("HoleFillPointFitDegree")
         self.degree.setRange(1, 7)
         self.degree.setValue(3)
-        layout.addRow("Degree:", self.degree)
-        self.adaptive = QtWidgets.QCheckBox("Adaptive refinement (THB-splines)")
+        layout.addRow(translate("HoleFill", "Degree:"), self.degree)
+        self.adaptive = QtWidgets.QCheckBox(translate("HoleFill", "Adaptive refinement (THB-splines)"))
         self.adaptive.setObjectName("HoleFillPointFitAdaptive")
         self.adaptive.setChecked(True)
         layout.addRow(self.adaptive)
         self.show = {}
-        for key, label in (("surface", "Show the surface"), ("cells", "Show the hierarchical mesh"), ("errors", "Show the point errors")):
+        for key, label in (("surface", translate("HoleFill", "Show the surface")), ("cells", translate("HoleFill", "Show the hierarchical mesh")), ("errors", translate("HoleFill", "Show the point errors"))):
             c = QtWidgets.QCheckBox(label)
             c.setObjectName("HoleFillPointFitShow_" + key)
             c.setChecked(True)
             c.toggled.connect(lambda *_: self.draw())
             layout.addRow(c)
             self.show[key] = c
-        preview = QtWidgets.QPushButton("Preview")
+        preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
         preview.setObjectName("HoleFillPointFitPreview")
         preview.clicked.connect(self.preview)
         layout.addRow(preview)
@@ -100,7 +102,7 @@ class FitPanel:
             self.result = HoleFill.fitPoints(self.points, **self.options())
         except Exception as e:
             self.result = None
-            self.status.setText("Fit failed: %s" % e)
+            self.status.setText(translate("HoleFill", "Fit failed: %s") % e)
             remove_overlay()
             return
         finally:
