@@ -36,6 +36,15 @@ case "$where" in
   "$mods/HoleFill/"*) echo "FreeCAD loads $where" ;;
   *) fail "FreeCAD did not load the installed module (got '$where')" ;;
 esac
+# The running FreeCAD accepts the workbench by its metadata (FreeCAD 1.0 skips an addon whose
+# freecadmin/freecadmax leave it out; 0.20 has no such check).
+supported=$(timeout 120 freecadcmd -c '
+import os, FreeCAD
+md = FreeCAD.Metadata(os.path.join(FreeCAD.getUserAppDataDir(), "Mod", "HoleFill", "package.xml"))
+wb = md.Content["workbench"][0]
+print("HOLEFILL_SUPPORTED=%s" % (wb.supportsCurrentFreeCAD() if hasattr(wb, "supportsCurrentFreeCAD") else "unchecked"))' 2>&1 |
+  sed -n 's/^HOLEFILL_SUPPORTED=//p')
+case "$supported" in True|unchecked) echo "FreeCAD's metadata check: $supported" ;; *) fail "FreeCAD refuses the workbench's package.xml (got '$supported')" ;; esac
 HOLEFILL_BUILD_DIR=$build "$src/scripts/install.sh" >/dev/null || fail "a second install did not replace the first"
 HOLEFILL_BUILD_DIR=$build "$src/scripts/install.sh" --uninstall
 [ ! -e "$mods/HoleFill" ] || fail "--uninstall left $mods/HoleFill"
