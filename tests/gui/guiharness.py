@@ -14,8 +14,8 @@ T0 = time.time()
 
 
 def log(msg):
-    print("[guitest %.1fs] %s" % (time.time() - T0, msg))
-    sys.stdout.flush()
+    # Straight to file descriptor 1: FreeCAD 1.0's GUI sends Python's sys.stdout to its report view.
+    os.write(1, ("[guitest %.1fs] %s\n" % (time.time() - T0, msg)).encode())
 
 
 def pump(ms=200):

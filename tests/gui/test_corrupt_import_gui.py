@@ -59,12 +59,13 @@ def body():
     doc, src = h.sample_document("GuiCorrupt", "Part", "box_minus_face")
     names = sorted(o.Name for o in doc.Objects)
     cage = HoleFill.sampleCage("cage_valence5")
-    far = "".join("v %r %r %r\n" % tuple(c * 1e300 for c in p) for p in cage["vertices"])
+    # repr of plain floats: numpy 2 (Debian 13) writes its own scalars as "np.float64(...)".
+    far = "".join("v %r %r %r\n" % tuple(float(c) * 1e300 for c in p) for p in cage["vertices"])
     far += "".join("f %d %d %d %d\n" % tuple(i + 1 for i in q) for q in cage["quads"])
     text = import_through_dialog(write("far_cage.obj", far), "gui_corrupt_1_far_cage.png")
     assert "coordinate beyond" in text, text
     assert sorted(o.Name for o in doc.Objects) == names, sorted(o.Name for o in doc.Objects)
-    cut = "".join("v %r %r %r\n" % tuple(p) for p in cage["vertices"]) + "f 1 2 3"
+    cut = "".join("v %r %r %r\n" % tuple(float(c) for c in p) for p in cage["vertices"]) + "f 1 2 3"
     text2 = import_through_dialog(write("cut_cage.obj", cut), "gui_corrupt_2_cut_cage.png")
     assert "cut_cage.obj" in text2, text2
     assert sorted(o.Name for o in doc.Objects) == names
