@@ -122,10 +122,25 @@ class LabelPanel:
             return
         pos = ev.getPosition().getValue()
         info = self.view.getObjectInfo((int(pos[0]), int(pos[1])))
-        if not info or info.get("Object") != self.obj.Name:
+        if info and info.get("Object") == self.obj.Name:
+            p = self.obj.Placement.inverse().multVec(FreeCAD.Vector(info["x"], info["y"], info["z"]))
+            QtCore.QTimer.singleShot(0, lambda: self.clickAt((p.x, p.y, p.z)))
             return
-        p = self.obj.Placement.inverse().multVec(FreeCAD.Vector(info["x"], info["y"], info["z"]))
-        QtCore.QTimer.singleShot(0, lambda: self.clickAt((p.x, p.y, p.z)))
+        # A click on the boundary itself can miss the mesh by a pixel (FreeCAD 1.0 picks so at a
+        # boundary vertex): the boundary vertex drawn within a few pixels of it is meant.
+        k = self.nearestOnScreen(pos)
+        if k is not None:
+            QtCore.QTimer.singleShot(0, lambda: self.clickAt(tuple(self.points[k])))
+
+    def nearestOnScreen(self, pos, pixels=6.0):
+        """The loop position whose vertex the view draws within `pixels` of screen position `pos`."""
+        best, where = pixels, None
+        for i, q in enumerate(self.points):
+            sx, sy = self.view.getPointOnScreen(self.obj.Placement.multVec(FreeCAD.Vector(*q)))
+            d = math.hypot(sx - pos[0], sy - pos[1])
+            if d <= best:
+                best, where = d, i
+        return where
 
     def clickAt(self, p):
         """A click at model point p (on the mesh): a vertex click splits or merges, an edge click
