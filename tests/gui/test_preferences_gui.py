@@ -23,8 +23,11 @@ def show_group(dlg):
     for tv in dlg.findChildren(QtWidgets.QTreeView):
         m = tv.model()
         hits = m.match(m.index(0, 0), QtCore.Qt.DisplayRole, "HoleFill", 1, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive)
-        if hits:
-            tv.setCurrentIndex(hits[0])
+        for hit in hits:
+            # 1.0: the group and, under it, its page; the page is what shows it.
+            index = m.index(0, 0, hit) if m.rowCount(hit) else hit
+            tv.setCurrentIndex(index)
+            tv.clicked.emit(index)
             return True
     return False
 
@@ -47,6 +50,7 @@ def body():
         state["page"] = True
         state["shown"] = show_group(dlg)
         h.pump(300)
+        state["visible"] = page.isVisible()
         page.findChild(QtWidgets.QComboBox, "FillMethod").setCurrentText("mvc")
         page.findChild(QtWidgets.QComboBox, "FillContinuity").setCurrentText("G2")
         page.findChild(QtWidgets.QComboBox, "FillOutput").setCurrentText("Sewn")
@@ -64,6 +68,7 @@ def body():
     h.pump(500)
     assert state.get("page"), "no HoleFill page in Edit -> Preferences"
     assert state.get("shown"), "the HoleFill group was not found in the dialog's list"
+    assert state.get("visible"), "the HoleFill page did not show when its group was chosen"
     got = (preferences.get("FillMethod"), preferences.get("FillContinuity"), preferences.get("FillOutput"))
     assert got == ("mvc", "G2", "Sewn"), got
 
