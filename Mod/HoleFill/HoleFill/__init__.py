@@ -19,7 +19,11 @@ timings, ...). Errors raise HoleFillError with a message that says what to do.
 """
 import json
 
-import HoleFillApp
+from HoleFill import build_check
+
+build_check.check()  # before the core is loaded: never two OCCTs in one process
+
+import HoleFillApp  # noqa: E402
 
 HoleFillError = HoleFillApp.HoleFillError
 METHODS = ("auto", "np", "mvc", "uvtran")
