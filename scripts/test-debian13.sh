@@ -9,7 +9,8 @@
 #   ./scripts/test-debian13.sh --keep-build [ARGS]   as above, the last run's build folder kept
 #                                         (incremental: for working on a failure, not for a verdict)
 # Needs root (debootstrap, unshare, chroot) and the archive at $HOLEFILL_DEB13_MIRROR (default
-# http://deb.debian.org/debian). /proc, /sys and /dev are bound into the root inside a private
+# http://deb.debian.org/debian). Exit status 3, and a line that says why, when this machine cannot
+# make the Debian 13 root (not root, no mount namespaces, debootstrap failed); otherwise test.sh's. /proc, /sys and /dev are bound into the root inside a private
 # mount namespace only: they vanish with the run, however it ends, and nothing that walks the
 # project's tree (grep -r, git clean, rm -rf .cache) ever meets the host's /dev through them.
 set -euo pipefail
@@ -19,8 +20,11 @@ mirror=${HOLEFILL_DEB13_MIRROR:-http://deb.debian.org/debian}
 clone=/work/holefill
 
 if [ "${HOLEFILL_DEB13_INSIDE:-}" != 1 ]; then
-  [ "$(id -u)" = 0 ] || { echo "[debian13] needs root (debootstrap, unshare and chroot)" >&2; exit 2; }
-  command -v debootstrap >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap
+  cannot() { echo "[debian13] cannot make a Debian 13 root here: $*" >&2; exit 3; }
+  [ "$(id -u)" = 0 ] || cannot "needs root (debootstrap, unshare and chroot)"
+  unshare --mount --propagation private true 2>/dev/null || cannot "no private mount namespace (unshare --mount)"
+  command -v debootstrap >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap ||
+    cannot "debootstrap could not be installed"
   # A root whose debootstrap was cut short has no marker and is made again.
   if [ ! -f "$chroot_dir/.holefill-root-complete" ]; then
     if findmnt -rn -o TARGET | grep -q "^$chroot_dir/"; then
@@ -29,7 +33,8 @@ if [ "${HOLEFILL_DEB13_INSIDE:-}" != 1 ]; then
     echo "[debian13] making a Debian 13 root in $chroot_dir (debootstrap, a few minutes)"
     rm -rf --one-file-system "$chroot_dir"
     mkdir -p "$chroot_dir"
-    debootstrap --variant=minbase --include=ca-certificates,git,sudo,procps trixie "$chroot_dir" "$mirror"
+    debootstrap --variant=minbase --include=ca-certificates,git,sudo,procps trixie "$chroot_dir" "$mirror" ||
+      { rm -rf --one-file-system "$chroot_dir"; cannot "debootstrap of trixie from $mirror failed"; }
     touch "$chroot_dir/.holefill-root-complete"
   fi
   cp /etc/resolv.conf "$chroot_dir/etc/resolv.conf"
