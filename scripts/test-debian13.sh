@@ -10,9 +10,10 @@
 #                                         (incremental: for working on a failure, not for a verdict)
 # Needs root (debootstrap, unshare, chroot) and the archive at $HOLEFILL_DEB13_MIRROR (default
 # http://deb.debian.org/debian). Exit status 3, and a line that says why, when this machine cannot
-# make the Debian 13 root (not root, no mount namespaces, debootstrap failed); otherwise test.sh's. /proc, /sys and /dev are bound into the root inside a private
-# mount namespace only: they vanish with the run, however it ends, and nothing that walks the
-# project's tree (grep -r, git clean, rm -rf .cache) ever meets the host's /dev through them.
+# make the Debian 13 root (not root, no mount namespaces, debootstrap failed); otherwise test.sh's.
+# /proc, /sys and /dev are bound into the root inside a private mount namespace only: they vanish
+# with the run, however it ends, and nothing that walks the project's tree (grep -r, git clean,
+# rm -rf .cache) ever meets the host's /dev through them.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 chroot_dir=${HOLEFILL_DEB13_ROOT:-$root/.cache/debian13}
