@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job on a fresh Debian 12 machine: install what is missing, build, install the
+# The main job on a fresh Debian 12 or 13 machine: install what is missing, build, install the
 # workbench, fill the bundled sample holes headless with freecadcmd, and write to demo-out/:
 # the filled models (.FCStd, .step), a continuity report per hole (.json + the printed
 # table) and a picture of each result (.png, rendered by FreeCAD under Xvfb); and G² G-NURBS

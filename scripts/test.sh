@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole test suite on a fresh Debian 12 machine: install what is missing, build,
+# The whole test suite on a fresh Debian 12 or 13 machine: install what is missing, build,
 # then run everything through ctest: GoogleTest (core), CLI, headless FreeCAD and GUI tests.
 #   ./scripts/test.sh --sanitize   the core's GoogleTest suite and the CLI tests under ASan+UBSan
 #                                  instead (clang, ./build-fuzz; docs/fuzzing.md says how long)
