@@ -66,7 +66,7 @@ class FillTaskPanel:
         self.showProjection.setToolTip(translate("HoleFill", "Overlay the surface UVTran predicts for this hole (view only)"))
         lay.addRow(self.showProjection)
         self.continuity = QtWidgets.QComboBox()
-        self.continuity.addItems(["G0", "G1", "G2"])
+        self.continuity.addItems(list(HoleFill.CONTINUITIES))
         self.continuity.setCurrentText("G1")
         lay.addRow(translate("HoleFill", "Continuity:"), self.continuity)
         # One row per loop edge: what to ask of it (auto = the continuity above, G0 on creases found
@@ -83,7 +83,7 @@ class FillTaskPanel:
         self.tolerance.setSpecialValueText(translate("HoleFill", "auto (1e-6 of hole size)"))
         lay.addRow(translate("HoleFill", "G0 tolerance:"), self.tolerance)
         self.output = QtWidgets.QComboBox()
-        self.output.addItems(["Face", "Sewn"])
+        self.output.addItems(list(fill_feature.OUTPUTS))
         lay.addRow(translate("HoleFill", "Output:"), self.output)
         self.preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
         lay.addRow(self.preview)

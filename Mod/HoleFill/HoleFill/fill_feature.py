@@ -9,6 +9,8 @@ import FreeCAD
 import HoleFill
 from HoleFill.transaction import ensureProperty
 
+OUTPUTS = ("Face", "Sewn")  # what a Fill object holds: the patch alone, or the source with it sewn in
+
 
 # Set by the Gui while it recomputes a Fill: callable(fraction) -> bool (False cancels).
 progressHook = None
@@ -50,7 +52,7 @@ class FillFeature:
             "Per-edge requests like Edge5=G0 (other edges: Continuity, creases found at the corners G0)")
         add("App::PropertyEnumeration", "Output", "Fill", "Face: the patch alone; Sewn: the source with the patch sewn in")
         if not obj.getEnumerationsOfProperty("Output"):
-            obj.Output = ["Face", "Sewn"]
+            obj.Output = list(OUTPUTS)
         for name, doc in (("Status", "ok, tolerance_not_met or the failure"), ("Achieved", "continuity reached"),
                           ("Report", "full continuity report (JSON)")):
             add("App::PropertyString", name, "Report", doc)

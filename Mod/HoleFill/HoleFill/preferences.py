@@ -2,20 +2,25 @@
 User parameter:BaseApp/Preferences/Mod/HoleFill. The task panels start from them; the macro API
 (fillHole, makeFill, ...) takes its own arguments and reads none of them, so that a macro gives
 the same result on every machine whatever its user chose."""
+import inspect
+
 import FreeCAD
+
+import HoleFill
+from HoleFill import fill_feature
 
 PATH = "User parameter:BaseApp/Preferences/Mod/HoleFill"
 
-# name: (default, what it sets). The defaults are the macro API's own.
+# name: (default, what it sets). The defaults are makeFill's own, read from it.
+_MAKE_FILL = inspect.signature(fill_feature.makeFill).parameters
 SETTINGS = {
-    "FillMethod": ("auto", "Fill hole: the parameterization (auto, np, mvc, uvtran)"),
-    "FillContinuity": ("G1", "Fill hole: the continuity asked of the hole's edges (G0, G1, G2)"),
-    "FillTolerance": (0.0, "Fill hole: the G0 tolerance in model units; 0: 1e-6 of the hole's size"),
-    "FillAngularTolerance": (1e-3, "Fill hole: the G1 tolerance in radians"),
-    "FillOutput": ("Face", "Fill hole: the new object holds the face alone (Face) or the source with it sewn in (Sewn)"),
+    "FillMethod": (_MAKE_FILL["method"].default, "Fill hole: the parameterization (%s)" % ", ".join(HoleFill.METHODS)),
+    "FillContinuity": (_MAKE_FILL["continuity"].default, "Fill hole: the continuity asked of the hole's edges (%s)" % ", ".join(HoleFill.CONTINUITIES)),
+    "FillTolerance": (float(_MAKE_FILL["tolerance"].default), "Fill hole: the G0 tolerance in model units; 0: 1e-6 of the hole's size"),
+    "FillAngularTolerance": (float(_MAKE_FILL["angularTolerance"].default), "Fill hole: the G1 tolerance in radians"),
+    "FillOutput": (_MAKE_FILL["output"].default, "Fill hole: the new object holds the face alone (Face) or the source with it sewn in (Sewn)"),
 }
-CHOICES = {"FillMethod": ("auto", "np", "mvc", "uvtran"), "FillContinuity": ("G0", "G1", "G2"), "FillOutput": ("Face", "Sewn")}
-
+CHOICES = {"FillMethod": HoleFill.METHODS, "FillContinuity": HoleFill.CONTINUITIES, "FillOutput": fill_feature.OUTPUTS}
 
 def _group():
     return FreeCAD.ParamGet(PATH)
