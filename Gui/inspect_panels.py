@@ -8,6 +8,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtGui, QtWidgets
 
+from HoleFill import preferences
 from HoleFillGui import inspection_overlay as overlay
 
 translate = FreeCAD.Qt.translate
@@ -183,7 +184,7 @@ class ZebraPanel(_Panel):
         mesh = overlay.show_zebra(obj, faces, count=self.count.value(), width=self.width.value(),
                                   angleDeg=self.angle.value(), isophote=self.mode.currentIndex() == 1,
                                   isoDirection=(math.cos(a), 0.0, math.sin(a)) if self.mode.currentIndex() == 1 else (0, 0, 1),
-                                  mesh=self.mesh(obj, faces, 2.0))
+                                  mesh=self.mesh(obj, faces, 2.0), renderer=preferences.get("ZebraRenderer"))
         return "%s: %d vertices, neighbouring normals within %.2f deg" % (
             obj.Label, len(mesh["points"]), math.degrees(max(mesh["maxInteriorNormalAngle"], mesh["maxBoundaryNormalAngle"])))
 

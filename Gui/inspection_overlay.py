@@ -120,7 +120,7 @@ def remove(kind=None, obj=None):
     for node in nodes(kind):
         name = node.getName().getString()
         if obj is None or name.endswith("_" + obj.Name):
-            root.removeChild(node)
+            _drop(root, node)
             n += 1
     _WATCH.forget(kind, obj)
     if not nodes():
@@ -155,11 +155,19 @@ def _surface_nodes(mesh, material_nodes):
     return sep
 
 
+def _drop(root, node):
+    name = node.getName().getString()  # before the removal: it may free the node
+    root.removeChild(node)
+    zebra = _VERTEX_ZEBRAS.pop(name, None)
+    if zebra is not None:
+        zebra.detach()
+
+
 def _add(kind, obj, node):
     root = _view().getSceneGraph()
     for old in nodes(kind):
         if old.getName().getString() == _name(kind, obj):
-            root.removeChild(old)
+            _drop(root, old)
     node.setName(_name(kind, obj))
     root.addChild(node)
     _WATCH.attach()
@@ -247,13 +255,88 @@ def zebra_shader(count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection
     return prog
 
 
+def zebra_shades(points, normals, camera, count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection=(0.0, 0.0, 1.0)):
+    """The fragment shader's grey per vertex (numpy arrays in, one value in [0, 1] per vertex out),
+    for `camera` (an SoCamera) as it is now; the stripe edges are hard, as the shader's are at a
+    pixel, and are blended across each triangle by the vertex colours."""
+    import math
+    import numpy
+    rot = camera.orientation.getValue()
+    axes = numpy.array([rot.multVec(coin.SbVec3f(*e)).getValue() for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))])
+    n_world = normals / numpy.maximum(numpy.linalg.norm(normals, axis=1), 1e-300)[:, None]
+    n = n_world @ axes.T  # eye space: rows of axes are the camera's x, y, z in world space
+    if isophote:
+        a = n_world
+        d = numpy.asarray(isoDirection, float) / max(numpy.linalg.norm(isoDirection), 1e-300)
+    else:
+        if camera.isOfType(coin.SoOrthographicCamera.getClassTypeId()):
+            v = numpy.tile([0.0, 0.0, -1.0], (len(points), 1))
+        else:
+            v = (points - numpy.array(camera.position.getValue().getValue())) @ axes.T
+            v /= numpy.maximum(numpy.linalg.norm(v, axis=1), 1e-300)[:, None]
+        a = v - 2.0 * numpy.sum(v * n, axis=1)[:, None] * n
+        d = numpy.array([math.cos(math.radians(angleDeg)), math.sin(math.radians(angleDeg)), 0.0])
+    s = numpy.arccos(numpy.clip(a @ d, -1.0, 1.0)) / math.pi * count
+    white = (s - numpy.floor(s)) >= width
+    return numpy.where(white, 0.97, 0.06) * (0.8 + 0.2 * numpy.abs(n[:, 2]))
+
+
+class _VertexZebra:
+    """Per-vertex stripes that follow the view: the material's colours are recomputed whenever the
+    camera turns or moves (a sensor on its orientation and position)."""
+
+    def __init__(self, mesh, camera, params):
+        import numpy
+        self.points = numpy.asarray(mesh["points"], float)
+        self.normals = numpy.asarray(mesh["normals"], float)
+        self.camera, self.params = camera, params
+        self.material = coin.SoMaterial()
+        self.light = coin.SoLightModel()
+        self.light.model = coin.SoLightModel.BASE_COLOR  # the grey already holds the shading
+        self.binding = coin.SoMaterialBinding()
+        self.binding.value = coin.SoMaterialBinding.PER_VERTEX_INDEXED
+        self.sensors = []
+        for field in (camera.orientation, camera.position):
+            sensor = coin.SoFieldSensor(self._changed, None)
+            sensor.attach(field)
+            self.sensors.append(sensor)
+        self.update()
+
+    def _changed(self, data, sensor):
+        self.update()
+
+    def update(self):
+        import numpy
+        grey = zebra_shades(self.points, self.normals, self.camera, **self.params).astype("float32")
+        rgb = numpy.repeat(grey[:, None], 3, axis=1)
+        self.material.diffuseColor.setValues(0, len(rgb), rgb)
+
+    def detach(self):
+        for sensor in self.sensors:
+            sensor.detach()
+        self.sensors = []
+
+
+_VERTEX_ZEBRAS = {}  # overlay node name -> its _VertexZebra, alive while the overlay is shown
+
+
 def show_zebra(obj, faces, count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection=(0.0, 0.0, 1.0),
-               maxNormalAngle=2.0, mesh=None):
-    """Zebra overlay (reflection lines, or isophotes when isophote=True); returns the mesh dict."""
+               maxNormalAngle=2.0, mesh=None, renderer="shader"):
+    """Zebra overlay (reflection lines, or isophotes when isophote=True); returns the mesh dict.
+    renderer: one of HoleFill.inspection.ZEBRA_RENDERERS (the Preferences' choice in the panel)."""
+    from HoleFill.inspection import ZEBRA_RENDERERS
+    if renderer not in ZEBRA_RENDERERS:
+        raise HoleFill.HoleFillError("unknown zebra renderer '%s': use %s" % (renderer, ", ".join(ZEBRA_RENDERERS)))
     mesh = mesh or bounded_mesh(obj, faces, maxNormalAngle, "Zebra stripes of")
-    _add("Zebra", obj, _surface_nodes(mesh, [zebra_shader(count, width, angleDeg, isophote, isoDirection)]))
+    if renderer == "shader":
+        node = _add("Zebra", obj, _surface_nodes(mesh, [zebra_shader(count, width, angleDeg, isophote, isoDirection)]))
+    else:
+        zebra = _VertexZebra(mesh, _view().getCameraNode(), dict(count=count, width=width, angleDeg=angleDeg,
+                                                                  isophote=isophote, isoDirection=isoDirection))
+        node = _add("Zebra", obj, _surface_nodes(mesh, [zebra.light, zebra.material, zebra.binding]))
+        _VERTEX_ZEBRAS[node.getName().getString()] = zebra
     _WATCH.remember("Zebra", obj, dict(faces=faces, count=count, width=width, angleDeg=angleDeg, isophote=isophote,
-                                       isoDirection=isoDirection, maxNormalAngle=maxNormalAngle))
+                                       isoDirection=isoDirection, maxNormalAngle=maxNormalAngle, renderer=renderer))
     return mesh
 
 

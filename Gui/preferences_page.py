@@ -45,15 +45,68 @@ class PreferencePage:
         lay.addRow(translate("HoleFill", "G1 tolerance:"), ang)
         self.widgets["FillAngularTolerance"] = ang
         outer.addWidget(box)
+        learned = QtWidgets.QGroupBox(translate("HoleFill", "Learned models: weights files (empty: the shipped ones)"))
+        lay = QtWidgets.QFormLayout(learned)
+        for name, label in (("UvtranWeights", translate("HoleFill", "UVTran (Fill hole):")),
+                            ("BidgcnWeights", translate("HoleFill", "BIDGCN (Fit point cloud):"))):
+            lay.addRow(label, self.fileRow(name))
+        outer.addWidget(learned)
+        box = QtWidgets.QGroupBox(translate("HoleFill", "Inspection"))
+        lay = QtWidgets.QFormLayout(box)
+        w = QtWidgets.QComboBox()
+        w.setObjectName("ZebraRenderer")
+        w.addItems(list(preferences.CHOICES["ZebraRenderer"]))
+        w.setToolTip(preferences.SETTINGS["ZebraRenderer"][1])
+        lay.addRow(translate("HoleFill", "Zebra stripes drawn by:"), w)
+        self.widgets["ZebraRenderer"] = w
+        outer.addWidget(box)
         outer.addStretch(1)
+
+    def fileRow(self, name):
+        row = QtWidgets.QWidget()
+        h = QtWidgets.QHBoxLayout(row)
+        h.setContentsMargins(0, 0, 0, 0)
+        edit = QtWidgets.QLineEdit()
+        edit.setObjectName(name)
+        edit.setToolTip(preferences.SETTINGS[name][1])
+        edit.setPlaceholderText(translate("HoleFill", "shipped weights"))
+        browse = QtWidgets.QToolButton()
+        browse.setText("…")
+
+        def choose():
+            path, _ = QtWidgets.QFileDialog.getOpenFileName(self.form, translate("HoleFill", "Weights file"), edit.text(),
+                                                            translate("HoleFill", "Torch archives (*.pt);;All files (*)"))
+            if path:
+                edit.setText(path)
+
+        browse.clicked.connect(choose)
+        h.addWidget(edit, 1)
+        h.addWidget(browse)
+        self.widgets[name] = edit
+        return row
 
     def loadSettings(self):
         for name, w in self.widgets.items():
             if isinstance(w, QtWidgets.QComboBox):
                 w.setCurrentText(preferences.get(name))
+            elif isinstance(w, QtWidgets.QLineEdit):
+                w.setText(preferences.get(name))
             else:
                 w.setValue(preferences.get(name))
 
     def saveSettings(self):
+        """Stores every value; one that cannot be kept (a weights file that does not exist) keeps
+        its stored value and is named in the report view, and the others are stored."""
         for name, w in self.widgets.items():
-            preferences.put(name, w.currentText() if isinstance(w, QtWidgets.QComboBox) else w.value())
+            if isinstance(w, QtWidgets.QComboBox):
+                value = w.currentText()
+            elif isinstance(w, QtWidgets.QLineEdit):
+                value = w.text().strip()
+            else:
+                value = w.value()
+            try:
+                preferences.put(name, value)
+            except ValueError as e:
+                FreeCAD.Console.PrintError(translate("HoleFill", "HoleFill preferences: %s not stored: %s") % (name, e) + "\n")
+                if isinstance(w, QtWidgets.QLineEdit):
+                    w.setText(preferences.get(name))

@@ -180,7 +180,8 @@ class FillTaskPanel:
         if not self.showProjection.isChecked() or self.source is None:
             return
         try:
-            face = HoleFill.projectionSurface(self.source.Shape, self.edges)
+            face = HoleFill.projectionSurface(self.source.Shape, self.edges,
+                                              self.obj.Weights if self.obj is not None else preferences.get("UvtranWeights"))
         except HoleFill.HoleFillError as e:
             self.report.setPlainText(translate("HoleFill", "No projection surface: %s") % e)
             return
@@ -195,6 +196,7 @@ class FillTaskPanel:
             self.created = True
             fill_feature.FillFeature(self.obj)
             self.obj.AngularTolerance = preferences.get("FillAngularTolerance")
+            self.obj.Weights = preferences.get("UvtranWeights")
             from HoleFillGui import view_provider
             view_provider.FillViewProvider(self.obj.ViewObject)
         self.obj.Source = (self.source, self.edges)

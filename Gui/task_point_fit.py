@@ -92,8 +92,9 @@ class FitPanel:
         self.preview()
 
     def options(self):
+        from HoleFill import preferences
         return dict(method=self.method.currentText(), tolerance=self.tolerance.value(), degree=self.degree.value(),
-                    thb=self.adaptive.isChecked())
+                    thb=self.adaptive.isChecked(), weights=preferences.get("BidgcnWeights"))
 
     def preview(self):
         import HoleFill

@@ -6,6 +6,8 @@
 #   ./scripts/test-debian13.sh            demo.sh, then test.sh (GUI tests under Xvfb included)
 #   ./scripts/test-debian13.sh -- ARGS    test.sh ARGS only (e.g. -- -L freecad)
 #   ./scripts/test-debian13.sh --shell    a shell in the root, at the clone
+#   ./scripts/test-debian13.sh --run 'CMD'   one command line in the root, at the clone (e.g.
+#                                         'BENCH_ONLY=corpus ./scripts/bench.sh', for docs/platforms.md)
 #   ./scripts/test-debian13.sh --keep-build [ARGS]   as above, the last run's build folder kept
 #                                         (incremental: for working on a failure, not for a verdict)
 # Needs root (debootstrap, unshare, chroot) and the archive at $HOLEFILL_DEB13_MIRROR (default
@@ -68,6 +70,7 @@ inside() {
 }
 case "${1:-}" in
   --shell) inside "exec bash -i" ;;
+  --run) inside "$2" ;;
   --) shift; inside "./scripts/test.sh $(printf '%q ' "$@")" ;;
   *) inside "./scripts/demo.sh && ./scripts/test.sh" ;;
 esac

@@ -84,12 +84,13 @@ py::tuple fillTuple(const HoleFillResult& r) {
 py::tuple fillPrepared(PreparedHole& hole, const std::string& method, const std::string& continuity, double tolerance,
                        double angularTolerance, double curvatureTolerance, int maxControlPoints,
                        const std::function<bool(double)>& progress, bool sew, const std::string& edgeContinuity,
-                       bool detectCreases, bool modelAccuracy) {
+                       bool detectCreases, bool modelAccuracy, const std::string& weights) {
   return guarded([&] {
     HoleFillOptions o = fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
                                     maxControlPoints, progress, edgeContinuity, detectCreases);
     o.sew = sew;
     o.modelAccuracy = modelAccuracy;
+    o.parameterization.uvtranWeights = weights;
     return fillTuple(hole.fill(o));
   });
 }
@@ -201,8 +202,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
       .def("fill", &fillPrepared, py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,
            py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,
            py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true, py::arg("edgeContinuity") = "",
-           py::arg("detectCreases") = true, py::arg("modelAccuracy") = true,
-           "Fill it: (face BREP, sewn model BREP, report JSON).")
+           py::arg("detectCreases") = true, py::arg("modelAccuracy") = true, py::arg("weights") = "",
+           "Fill it: (face BREP, sewn model BREP, report JSON). weights: UVTran's .pt file, empty for the shipped one.")
       .def("computed", [](const PreparedHole& h) { return py::make_tuple(h.cache().samplings, h.cache().parameterizations); },
            "(boundary samplings, parameterizations) computed so far; the rest came from the kept ones.");
   m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"),

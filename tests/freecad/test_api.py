@@ -1,4 +1,5 @@
 """Headless FreeCAD tests of the HoleFill Python API and the Fill document object (freecadcmd)."""
+import json
 import math
 import os
 
@@ -219,6 +220,51 @@ def test_make_fill_preview_reuses_the_prepared_hole():
     doc.recompute()
     assert fill.isValid() and fill.Proxy._prepared[2] is not prepared
     assert fill.Shape.BoundBox.Center.z > 2
+    FreeCAD.closeDocument(doc.Name)
+
+
+def test_fill_follows_its_hole_when_the_source_numbers_its_edges_anew():
+    """A source re-imported or rebuilt may number its edges anew: the Fill's "Edge<k>" would then
+    name an edge of another hole (here the bottom of an open box instead of its top). The Fill finds
+    its hole again by position, renames the pick and says so; an unchanged source keeps its names."""
+    import itertools
+
+    def sides(height):
+        box = Part.makeBox(10, 8, height)
+        return [f for f in box.Faces if abs(f.normalAt(0, 0).z) < 0.5]  # the top and bottom are the holes
+
+    def flat(edge, z):
+        return abs(edge.BoundBox.ZMin - z) < 1e-9 and edge.BoundBox.ZLength < 1e-9
+
+    # Two orders of the same four sides, and a top edge of the first whose number names a bottom
+    # edge in the second (the shell numbers edges face by face).
+    faces = sides(6)
+    shells = {o: Part.makeShell([faces[i] for i in o]) for o in itertools.permutations(range(4))}
+    first, pick, second = next((a, k + 1, b) for a in shells for k, e in enumerate(shells[a].Edges) if flat(e, 6)
+                               for b in shells if flat(shells[b].Edges[k], 0))
+    doc = FreeCAD.newDocument("HoleFillRenumbered")
+    src = doc.addObject("Part::Feature", "Open")
+    src.Shape = shells[first]
+    doc.recompute()
+    fill = HoleFill.makeFill(src, ["Edge%d" % pick], method="mvc", continuity="G0")
+    assert fill.Status == "ok" and abs(fill.Shape.BoundBox.ZMin - 6) < 1e-6, (fill.Status, fill.Shape.BoundBox)
+    assert len(fill.HoleSignature) == 4
+    src.Shape = shells[first].copy()  # the same shape again: names stand, no warning
+    doc.recompute()
+    assert list(fill.Source[1]) == ["Edge%d" % pick] and not json.loads(fill.Report)["warnings"]
+    src.Shape = shells[second]
+    doc.recompute()
+    rep = json.loads(fill.Report)
+    assert fill.isValid() and abs(fill.Shape.BoundBox.ZMin - 6) < 1e-6, fill.Shape.BoundBox  # still the top
+    name = fill.Source[1][0]
+    assert name != "Edge%d" % pick and flat(src.Shape.getElement(name), 6), name
+    assert any("renumbered" in w for w in rep["warnings"]), rep["warnings"]
+    assert "Touched" not in fill.State, fill.State
+    # Renumbered and taller: the hole nearest where it was (the top, now at z = 7) is followed.
+    taller = sides(7)
+    src.Shape = Part.makeShell([taller[i] for i in first])
+    doc.recompute()
+    assert fill.isValid() and abs(fill.Shape.BoundBox.ZMin - 7) < 1e-6, fill.Shape.BoundBox
     FreeCAD.closeDocument(doc.Name)
 
 

@@ -2,6 +2,7 @@
 the macro API's own, values kept in FreeCAD's parameters, bad values refused on storing and ignored
 on reading, and the macro API unmoved by them."""
 import inspect
+import json
 
 import FreeCAD
 
@@ -18,6 +19,9 @@ def test_defaults_are_the_macro_apis():
     assert preferences.get("FillTolerance") == sig["tolerance"].default == 0.0
     assert preferences.get("FillAngularTolerance") == sig["angularTolerance"].default == 1e-3
     assert preferences.get("FillOutput") == "Face"
+    assert preferences.get("UvtranWeights") == sig["weights"].default == ""
+    assert preferences.get("BidgcnWeights") == inspect.signature(HoleFill.fitPoints).parameters["weights"].default == ""
+    assert preferences.get("ZebraRenderer") == "shader"
 
 
 def test_values_live_in_freecads_parameters():
@@ -35,7 +39,8 @@ def test_values_live_in_freecads_parameters():
 
 def test_bad_values_are_refused_and_stale_ones_read_as_defaults():
     preferences.reset()
-    for name, value in (("FillMethod", "support"), ("FillContinuity", "G3"), ("FillOutput", "Solid"), ("FillTolerance", -1.0)):
+    for name, value in (("FillMethod", "support"), ("FillContinuity", "G3"), ("FillOutput", "Solid"), ("FillTolerance", -1.0),
+                        ("ZebraRenderer", "opengl"), ("UvtranWeights", "/nonexistent/uvtran.pt"), ("BidgcnWeights", "/nonexistent")):
         try:
             preferences.put(name, value)
         except ValueError as e:
@@ -48,6 +53,42 @@ def test_bad_values_are_refused_and_stale_ones_read_as_defaults():
     group.SetFloat("FillAngularTolerance", -5.0)
     assert preferences.get("FillMethod") == "auto" and preferences.get("FillAngularTolerance") == 1e-3
     preferences.reset()
+
+
+def test_uvtran_weights_reach_the_fill():
+    """The weights file a Fill names is the one its uvtran fill loads: the shipped file under
+    another name gives the shipped result, a file that is no torch archive makes the fill fall
+    back to mvc and say why, naming the file."""
+    import shutil
+    import tempfile
+    doc = FreeCAD.newDocument("PrefWeights")
+    try:
+        import os
+        import Part
+        src = doc.addObject("Part::Feature", "Panel")
+        src.Shape = Part.read(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "samples", "panel_6_sided.brep"))
+        doc.recompute()
+        shipped = HoleFill.makeFill(src, None, method="uvtran")
+        tmp = tempfile.mkdtemp()
+        copy = os.path.join(tmp, "my_uvtran.pt")
+        shutil.copy(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "models", "uvtran.pt"), copy)
+        named = HoleFill.makeFill(src, None, method="uvtran", weights=copy)
+        assert named.Weights == copy
+        a, b = json.loads(shipped.Report), json.loads(named.Report)
+        assert a["method"] == b["method"] == "uvtran", (a["method"], b["method"], b["warnings"])
+        assert abs(shipped.Shape.Area - named.Shape.Area) < 1e-9 * shipped.Shape.Area
+        garbage = os.path.join(tmp, "garbage.pt")
+        with open(garbage, "w") as f:
+            f.write("not a torch archive\n")
+        preferences.put("UvtranWeights", garbage)  # stored: it exists; what it holds the fill judges
+        named.Weights = garbage
+        doc.recompute()
+        c = json.loads(named.Report)
+        assert c["method"] == "uvtran:mvc" and any("garbage.pt" in w for w in c["warnings"]), (c["method"], c["warnings"])
+        shutil.rmtree(tmp)
+    finally:
+        preferences.reset()
+        FreeCAD.closeDocument(doc.Name)
 
 
 fcharness.run(globals())

@@ -122,6 +122,44 @@ def body():
     h.pump(500)
     assert not overlays("Zebra"), "Cancel left the zebra overlay"
 
+    # 2b. The same with Preferences → Zebra stripes drawn by: vertex (OpenGL without shaders): no
+    # shader in the overlay, per-vertex greys that change when the camera turns; Cancel removes them.
+    from pivy import coin
+    from HoleFill import preferences
+    from HoleFillGui import inspection_overlay
+    preferences.put("ZebraRenderer", "vertex")
+    try:
+        FreeCADGui.runCommand("HoleFill_ZebraStripes")
+        h.pump(1500)
+        assert len(overlays("Zebra")) == 2
+        node = overlays("Zebra_Fill")[0]
+        kids = [node.getChild(i) for i in range(node.getNumChildren())]
+        assert not [k for k in kids if k.isOfType(coin.SoShaderProgram.getClassTypeId())], "vertex zebra has a shader"
+        mat = [k for k in kids if k.isOfType(coin.SoMaterial.getClassTypeId())][0]
+        coords = [k for k in kids if k.isOfType(coin.SoCoordinate3.getClassTypeId())][0]
+        assert mat.diffuseColor.getNum() == coords.point.getNum() > 100, (mat.diffuseColor.getNum(), coords.point.getNum())
+        greys = [mat.diffuseColor[i][0] for i in range(mat.diffuseColor.getNum())]
+        info["vertex_zebra_light_share"] = sum(g > 0.5 for g in greys) / len(greys)
+        assert 0.05 < info["vertex_zebra_light_share"] < 0.95, info["vertex_zebra_light_share"]
+        view.saveImage(h.shot("gui_inspect_2b_zebra_vertex_iso.png"), 1024, 768, "White")
+        cov, dark, light, sat = pixels(h.shot("gui_inspect_2b_zebra_vertex_iso.png"))
+        info["vertex_zebra_pixels"] = (cov, dark, light)
+        assert dark > 0.05 and light > 0.05, (dark, light)
+        view.viewTop()
+        h.pump(500)
+        turned = [mat.diffuseColor[i][0] for i in range(mat.diffuseColor.getNum())]
+        changed = sum(abs(a - b) > 0.3 for a, b in zip(greys, turned)) / len(greys)
+        info["vertex_zebra_changed_with_view"] = changed
+        assert changed > 0.05, "the per-vertex stripes did not follow the camera"
+        view.saveImage(h.shot("gui_inspect_2b_zebra_vertex_top.png"), 1024, 768, "White")
+        view.viewIsometric()
+        button(QtWidgets.QDialogButtonBox.Cancel).click()
+        h.pump(500)
+        assert not overlays("Zebra"), "Cancel left the vertex zebra overlay"
+        assert not inspection_overlay._VERTEX_ZEBRAS, "a removed vertex zebra still watches the camera"
+    finally:
+        preferences.reset()
+
     # 3. Continuity check on the Fill object: a panel with numbers and a coloured boundary.
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(fill)

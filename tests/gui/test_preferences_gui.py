@@ -33,9 +33,12 @@ def show_group(dlg):
 
 
 def body():
+    import os
+    import HoleFill
     preferences.reset()
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
     state = {}
+    weights = os.path.realpath(os.path.join(os.path.dirname(HoleFill.__file__), "..", "Resources", "models", "uvtran.pt"))
 
     def in_dialog():
         dlg, page = find_page()
@@ -54,6 +57,9 @@ def body():
         page.findChild(QtWidgets.QComboBox, "FillMethod").setCurrentText("mvc")
         page.findChild(QtWidgets.QComboBox, "FillContinuity").setCurrentText("G2")
         page.findChild(QtWidgets.QComboBox, "FillOutput").setCurrentText("Sewn")
+        page.findChild(QtWidgets.QComboBox, "ZebraRenderer").setCurrentText("vertex")
+        page.findChild(QtWidgets.QLineEdit, "UvtranWeights").setText(weights)
+        page.findChild(QtWidgets.QLineEdit, "BidgcnWeights").setText("/nonexistent/bidgcn.pt")  # not kept, said why
         h.pump(200)
         QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_preferences_page.png"))
         for bb in dlg.findChildren(QtWidgets.QDialogButtonBox):
@@ -71,6 +77,8 @@ def body():
     assert state.get("visible"), "the HoleFill page did not show when its group was chosen"
     got = (preferences.get("FillMethod"), preferences.get("FillContinuity"), preferences.get("FillOutput"))
     assert got == ("mvc", "G2", "Sewn"), got
+    got = (preferences.get("ZebraRenderer"), preferences.get("UvtranWeights"), preferences.get("BidgcnWeights"))
+    assert got == ("vertex", weights, ""), got
 
     # A new fill's panel starts from the preferences.
     doc, src = h.sample_document("GuiPrefs", "Panel", "panel_6_sided")
@@ -83,6 +91,12 @@ def body():
     combos = {c.currentText() for c in mw.findChildren(QtWidgets.QComboBox) if c.isVisible()}
     assert {"mvc", "G2", "Sewn"} <= combos, combos
     QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_preferences_fill_panel.png"))
+    # Its Preview makes a Fill that names the preferred weights.
+    preview = [b for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible() and b.text() == "Preview"][0]
+    preview.click()
+    h.pump(3000)
+    fills = [o for o in doc.Objects if o.Name.startswith("Fill")]
+    assert len(fills) == 1 and fills[0].Weights == weights, [(o.Name, getattr(o, "Weights", None)) for o in fills]
     for bb in mw.findChildren(QtWidgets.QDialogButtonBox):
         b = bb.button(QtWidgets.QDialogButtonBox.Cancel)
         if bb.isVisible() and b is not None and b.isVisible():

@@ -126,7 +126,7 @@ class PreparedHole:
 
     def fill(self, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3, curvatureTolerance=0.1,
              maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None, detectCreases=True,
-             modelAccuracy=True):
+             modelAccuracy=True, weights=""):
         """As fillHole, on this hole."""
         if method not in METHODS + ("support",):
             raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
@@ -136,7 +136,7 @@ class PreparedHole:
                         for e, c in (edgeContinuity or {}).items())
         face, model, rep = self._prepared.fill(method, continuity, float(tolerance), float(angularTolerance),
                                                float(curvatureTolerance), int(maxControlPoints), progress,
-                                               bool(sewn), spec, bool(detectCreases), bool(modelAccuracy))
+                                               bool(sewn), spec, bool(detectCreases), bool(modelAccuracy), str(weights))
         report = json.loads(rep)
         if report["status"] in ("failed", "cancelled"):
             where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
@@ -156,7 +156,7 @@ def prepareHole(shape, hole=1):
 
 def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
              curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None,
-             detectCreases=True, modelAccuracy=True):
+             detectCreases=True, modelAccuracy=True, weights=""):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
@@ -173,12 +173,13 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     modelAccuracy: an edge of an inexact model (its own BRep tolerance above the G0 tolerance, or a
     neighbour meeting its curve at an angle, report["per_edge"][k]["g1_floor"]) is judged no
     stricter than the model is there, and the message names such edges; False: the tiers alone.
+    weights: UVTran's weights file (.pt, from `holefill train uvtran`); "" for the shipped one.
     Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
     The report says what was achieved; a fill that misses the request is returned with
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
     return PreparedHole(shape, hole).fill(method, continuity, tolerance, angularTolerance, curvatureTolerance,
                                           maxControlPoints, progress, sewn, edgeContinuity, detectCreases,
-                                          modelAccuracy)
+                                          modelAccuracy, weights)
 
 
 def fillAdjacentHoles(shape, hole, divider, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
@@ -229,16 +230,17 @@ def continuityReport(face, shape, hole=None):
 
 
 def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             output="Face", doc=None, edgeContinuity=None):
+             output="Face", doc=None, edgeContinuity=None, weights=""):
     """Create a parametric Fill object on `source` (a document object with a Shape).
     edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.
-    edgeContinuity: per-edge requests as in fillHole, kept in the EdgeContinuity property.
+    edgeContinuity: per-edge requests as in fillHole, kept in the EdgeContinuity property;
+    weights: UVTran's weights file as in fillHole, kept in the Weights property.
     The object recomputes when the source changes; the source is never modified.
     Runs inside an undo transaction; on failure the document is left as it was and
     HoleFillError is raised."""
     from HoleFill import fill_feature
     return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc,
-                                 edgeContinuity)
+                                 edgeContinuity, weights)
 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402

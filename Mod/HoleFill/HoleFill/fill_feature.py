@@ -27,6 +27,58 @@ def edgeContinuityDict(entries):
     return out
 
 
+def edgeMidpoints(shape, indices):
+    """The midpoints (by parameter) of `shape`'s 1-based edges `indices`."""
+    out = []
+    for i in indices:
+        e = shape.Edges[i - 1]
+        out.append(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+    return out
+
+
+def holeSignature(shape, picked, loop):
+    """What a Fill keeps of its hole to find it again (HoleSignature): the midpoints of the picked
+    edges, in their order, then those of the loop's other edges."""
+    return edgeMidpoints(shape, list(picked) + [i for i in loop if i not in picked])
+
+
+def followHole(shape, edges, signature):
+    """The picked edges of a hole whose source was rebuilt: (edges, message). Edge numbers are not
+    stable (a source rebuilt or re-imported may number its edges anew; FreeCAD 0.20 has no element
+    map, and 1.0 keeps one only for shapes with a history), so when a picked edge no longer has its
+    midpoint where the signature (holeSignature) says, the hole whose edges' midpoints lie nearest
+    to the signature's is taken, and each pick becomes its edge nearest the pick's old midpoint;
+    the message says so. With no signature (a document of an older version) or no holes the names
+    stand, and the fill judges them."""
+    picked = [int(e[4:]) for e in edges if isinstance(e, str) and e.startswith("Edge") and e[4:].isdigit()]
+    if not signature or len(picked) != len(edges) or len(signature) < len(picked):
+        return edges, None
+    n = len(shape.Edges)
+    tol = 1e-7 * max(shape.BoundBox.DiagonalLength, 1e-300)
+
+    def near(p, pts):
+        return min((p - q).Length for q in pts)
+
+    if all(1 <= i <= n for i in picked) and all(near(m, signature) <= tol for m in edgeMidpoints(shape, picked)):
+        return edges, None
+    best = None
+    for h in HoleFill.findHoles(shape, includeOuter=True):
+        mids = edgeMidpoints(shape, h["edge_indices"])
+        score = max(near(p, mids) for p in signature)
+        if best is None or score < best[0]:
+            best = (score, h["edge_indices"], mids)
+    if best is None:
+        return edges, None
+    _, indices, mids = best
+    renamed = []
+    for target in signature[:len(picked)]:
+        name = "Edge%d" % indices[min(range(len(indices)), key=lambda j: (mids[j] - target).Length)]
+        if name not in renamed:
+            renamed.append(name)
+    return renamed, "the source's edges were renumbered: the hole was found again by position, %s is now %s" % (
+        ", ".join(edges), ", ".join(renamed))
+
+
 class FillFeature:
     def __init__(self, obj):
         obj.Proxy = self
@@ -48,11 +100,15 @@ class FillFeature:
             obj.Continuity = "G1"
         add("App::PropertyLength", "Tolerance", "Fill", "G0 tolerance (0: 1e-6 of the hole size)", 0.0)
         add("App::PropertyFloat", "AngularTolerance", "Fill", "G1 tolerance in radians", 1e-3)
+        add("App::PropertyVectorList", "HoleSignature", "Fill", "Midpoints of the hole's edges, picked ones first: "
+            "where the hole is found again when the source numbers its edges anew")
+        obj.setEditorMode("HoleSignature", 2)
         add("App::PropertyStringList", "EdgeContinuity", "Fill",
             "Per-edge requests like Edge5=G0 (other edges: Continuity, creases found at the corners G0)")
         add("App::PropertyEnumeration", "Output", "Fill", "Face: the patch alone; Sewn: the source with the patch sewn in")
         if not obj.getEnumerationsOfProperty("Output"):
             obj.Output = list(OUTPUTS)
+        add("App::PropertyFile", "Weights", "Fill", "UVTran's weights file (.pt) for the uvtran method; empty: the shipped one")
         for name, doc in (("Status", "ok, tolerance_not_met or the failure"), ("Achieved", "continuity reached"),
                           ("Report", "full continuity report (JSON)")):
             add("App::PropertyString", name, "Report", doc)
@@ -70,15 +126,30 @@ class FillFeature:
         if src is None or not hasattr(src, "Shape"):
             raise HoleFill.HoleFillError("Fill has no source object with a shape")
         edges = [s for s in subs if s.startswith("Edge")] or 1
+        moved = None
+        if edges != 1:
+            edges, moved = followHole(src.Shape, edges, list(obj.HoleSignature))
+            if moved:  # renamed without touching the Fill: this recompute is the one that uses it
+                obj.setPropertyStatus("Source", "NoRecompute")
+                try:
+                    obj.Source = (src, edges)
+                finally:
+                    obj.setPropertyStatus("Source", "-NoRecompute")
         res = self.prepared(src.Shape, edges).fill(method=obj.Method, continuity=obj.Continuity,
                                                    tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
                                                    sewn=obj.Output == "Sewn", progress=progressHook,
-                                                   edgeContinuity=edgeContinuityDict(obj.EdgeContinuity))
+                                                   edgeContinuity=edgeContinuityDict(obj.EdgeContinuity),
+                                                   weights=obj.Weights)
         obj.Shape = res[1] if obj.Output == "Sewn" else res[0]
         report = res[-1]
         obj.Status = report["status"]
         obj.Achieved = report["achieved"]
         obj.G0, obj.G1, obj.G2 = report["g0"], report["g1"], report["g2"]
+        if edges != 1:
+            obj.HoleSignature = holeSignature(src.Shape, [int(e[4:]) for e in edges], report["edges"])
+        if moved:
+            report.setdefault("warnings", []).append(moved)
+            FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, moved))
         obj.Report = json.dumps(report)
         if report["status"] != "ok":
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, report["message"]))
@@ -103,7 +174,7 @@ class FillFeature:
 
 
 def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             output="Face", doc=None, edgeContinuity=None):
+             output="Face", doc=None, edgeContinuity=None, weights=""):
     if source is None or not hasattr(source, "Shape"):
         raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
     doc = doc or source.Document
@@ -122,6 +193,7 @@ def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, 
         obj.Tolerance = tolerance
         obj.AngularTolerance = angularTolerance
         obj.Output = output
+        obj.Weights = weights
         obj.EdgeContinuity = ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
                               for e, c in (edgeContinuity or {}).items()]
         if FreeCAD.GuiUp:

@@ -14,6 +14,10 @@ import HoleFillApp
 
 QUANTITIES = ("mean", "gauss", "max", "min", "direction")
 RENDER_MODES = ("zebra", "curvature", "shaded")
+# How the workbench's zebra overlay draws its stripes: "shader" per pixel by a GLSL shader (sharp at
+# any tessellation); "vertex" per vertex of the inspection mesh, recomputed when the camera moves,
+# for OpenGL without shaders (remote X, old drivers), where the shader draws nothing.
+ZEBRA_RENDERERS = ("shader", "vertex")
 VIEWS = ("iso", "top", "bottom", "front", "back", "left", "right")
 
 

@@ -132,6 +132,7 @@ class PointCloudFitFeature:
         add("App::PropertyIntegerConstraint", "Degree", "Fit", "Spline degree", (3, 1, 7, 1))
         add("App::PropertyBool", "Adaptive", "Fit", "Refine adaptively (THB-splines); off: one uniform level", True)
         add("App::PropertyIntegerConstraint", "Iterations", "Fit", "Refinement iterations at most", (8, 1, 30, 1))
+        add("App::PropertyFile", "Weights", "Fit", "BIDGCN's weights file (.pt) for the bidgcn method; empty: the shipped one")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         obj.setEditorMode("Report", 1)
 
@@ -143,7 +144,7 @@ class PointCloudFitFeature:
             raise HoleFillApp.HoleFillError("the point-cloud fit has no source")
         tol = float(obj.Tolerance) if float(obj.Tolerance) > 0 else None
         face, rep = fitPoints(_sourcePoints(obj.Source), method=obj.Method, tolerance=tol, degree=obj.Degree, thb=obj.Adaptive,
-                              iterations=obj.Iterations)
+                              iterations=obj.Iterations, weights=obj.Weights)
         obj.Shape = face
         obj.Report = json.dumps({k: v for k, v in rep.items() if k not in ("uv", "errors", "cells", "boundary")})
 
@@ -154,9 +155,10 @@ class PointCloudFitFeature:
         return None
 
 
-def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit"):
+def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit",
+                      weights=""):
     """A parametric fit of a Points or Mesh object in one undo step (tolerance in model units,
-    0: 1e-3 of the diagonal)."""
+    0: 1e-3 of the diagonal; weights: BIDGCN's weights file, "" for the shipped one)."""
     import FreeCAD
     _sourcePoints(source)  # refuse other objects before touching the document
 
@@ -168,6 +170,7 @@ def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True,
         obj.Degree = int(degree)
         obj.Adaptive = bool(thb)
         obj.Iterations = int(iterations)
+        obj.Weights = str(weights)
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
 

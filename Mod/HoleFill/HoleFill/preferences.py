@@ -1,13 +1,15 @@
 """The workbench's preferences (Edit → Preferences → HoleFill), kept in FreeCAD's parameters under
 User parameter:BaseApp/Preferences/Mod/HoleFill. The task panels start from them; the macro API
 (fillHole, makeFill, ...) takes its own arguments and reads none of them, so that a macro gives
-the same result on every machine whatever its user chose."""
+the same result on every machine whatever its user chose. A weights file that has gone since it
+was stored is passed on as it is: the fill then says so in its report (and falls back to mvc)."""
 import inspect
+import os
 
 import FreeCAD
 
 import HoleFill
-from HoleFill import fill_feature
+from HoleFill import fill_feature, inspection, pointcloud
 
 PATH = "User parameter:BaseApp/Preferences/Mod/HoleFill"
 
@@ -19,8 +21,17 @@ SETTINGS = {
     "FillTolerance": (float(_MAKE_FILL["tolerance"].default), "Fill hole: the G0 tolerance in model units; 0: 1e-6 of the hole's size"),
     "FillAngularTolerance": (float(_MAKE_FILL["angularTolerance"].default), "Fill hole: the G1 tolerance in radians"),
     "FillOutput": (_MAKE_FILL["output"].default, "Fill hole: the new object holds the face alone (Face) or the source with it sewn in (Sewn)"),
+    "UvtranWeights": (_MAKE_FILL["weights"].default, "Fill hole: UVTran's weights file (.pt, from holefill train uvtran); empty: the shipped one"),
+    "BidgcnWeights": (inspect.signature(pointcloud.fitPoints).parameters["weights"].default,
+                      "Fit point cloud: BIDGCN's weights file (.pt, from holefill train bidgcn); empty: the shipped one"),
+    "ZebraRenderer": (inspection.ZEBRA_RENDERERS[0], "Zebra stripes: shader draws them per pixel (GLSL); vertex per vertex of the inspection mesh, "
+                                "for OpenGL without shaders (remote X, old drivers), where the shader draws nothing"),
 }
-CHOICES = {"FillMethod": HoleFill.METHODS, "FillContinuity": HoleFill.CONTINUITIES, "FillOutput": fill_feature.OUTPUTS}
+CHOICES = {"FillMethod": HoleFill.METHODS, "FillContinuity": HoleFill.CONTINUITIES, "FillOutput": fill_feature.OUTPUTS,
+           "ZebraRenderer": inspection.ZEBRA_RENDERERS}
+
+FILES = ("UvtranWeights", "BidgcnWeights")  # paths: empty, or a file that exists when stored
+
 
 def _group():
     return FreeCAD.ParamGet(PATH)
@@ -52,6 +63,8 @@ def put(name, value):
     value = str(value)
     if name in CHOICES and value not in CHOICES[name]:
         raise ValueError("%s must be one of %s" % (name, ", ".join(CHOICES[name])))
+    if name in FILES and value and not os.path.isfile(value):
+        raise ValueError("%s: no such file: %s" % (name, value))
     _group().SetString(name, value)
 
 
