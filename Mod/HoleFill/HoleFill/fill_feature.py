@@ -27,29 +27,34 @@ def edgeContinuityDict(entries):
     return out
 
 
-def edgeMidpoints(shape, indices):
-    """The midpoints (by parameter) of `shape`'s 1-based edges `indices`."""
+def edgeMidpoints(shape, indices, placement=None):
+    """The midpoints (by parameter) of `shape`'s 1-based edges `indices`, in the frame of
+    `placement` (the source object's: where they are whatever the object's Placement)."""
+    inv = placement.inverse() if placement is not None else None
     out = []
     for i in indices:
         e = shape.Edges[i - 1]
-        out.append(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)))
+        p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+        out.append(inv.multVec(p) if inv is not None else p)
     return out
 
 
-def holeSignature(shape, picked, loop):
+def holeSignature(shape, picked, loop, placement=None):
     """What a Fill keeps of its hole to find it again (HoleSignature): the midpoints of the picked
-    edges, in their order, then those of the loop's other edges."""
-    return edgeMidpoints(shape, list(picked) + [i for i in loop if i not in picked])
+    edges, in their order, then those of the loop's other edges, in the source's own frame."""
+    return edgeMidpoints(shape, list(picked) + [i for i in loop if i not in picked], placement)
 
 
-def followHole(shape, edges, signature):
+def followHole(shape, edges, signature, placement=None):
     """The picked edges of a hole whose source was rebuilt: (edges, message). Edge numbers are not
     stable (a source rebuilt or re-imported may number its edges anew; FreeCAD 0.20 has no element
-    map, and 1.0 keeps one only for shapes with a history), so when a picked edge no longer has its
-    midpoint where the signature (holeSignature) says, the hole whose edges' midpoints lie nearest
-    to the signature's is taken, and each pick becomes its edge nearest the pick's old midpoint;
-    the message says so. With no signature (a document of an older version) or no holes the names
-    stand, and the fill judges them."""
+    map, 1.0 follows a renaming itself only where the shape has a history), so when a picked edge's
+    midpoint is no longer one of the signature's (holeSignature), every hole is scored by how far
+    the signature's midpoints lie from its edges' (the largest distance), and the picks move to
+    the best hole only when it is clearly nearer than the hole they name (under half its score):
+    a hole whose surroundings changed shape keeps its names. Each pick becomes the best hole's
+    edge nearest the pick's old midpoint, and the message says so. With no signature (a document
+    of an older version) or no holes the names stand, and the fill judges them."""
     picked = [int(e[4:]) for e in edges if isinstance(e, str) and e.startswith("Edge") and e[4:].isdigit()]
     if not signature or len(picked) != len(edges) or len(signature) < len(picked):
         return edges, None
@@ -59,22 +64,26 @@ def followHole(shape, edges, signature):
     def near(p, pts):
         return min((p - q).Length for q in pts)
 
-    if all(1 <= i <= n for i in picked) and all(near(m, signature) <= tol for m in edgeMidpoints(shape, picked)):
+    valid = all(1 <= i <= n for i in picked)
+    if valid and all(near(m, signature) <= tol for m in edgeMidpoints(shape, picked, placement)):
         return edges, None
-    best = None
+    scored = []
     for h in HoleFill.findHoles(shape, includeOuter=True):
-        mids = edgeMidpoints(shape, h["edge_indices"])
-        score = max(near(p, mids) for p in signature)
-        if best is None or score < best[0]:
-            best = (score, h["edge_indices"], mids)
-    if best is None:
+        mids = edgeMidpoints(shape, h["edge_indices"], placement)
+        scored.append((max(near(p, mids) for p in signature), h["edge_indices"], mids))
+    if not scored:
         return edges, None
-    _, indices, mids = best
+    best, indices, mids = min(scored, key=lambda x: x[0])
+    named = [x[0] for x in scored if valid and picked[0] in x[1]]
+    if named and not best < 0.5 * named[0]:
+        return edges, None
     renamed = []
     for target in signature[:len(picked)]:
         name = "Edge%d" % indices[min(range(len(indices)), key=lambda j: (mids[j] - target).Length)]
         if name not in renamed:
             renamed.append(name)
+    if renamed == list(edges):
+        return edges, None
     return renamed, "the source's edges were renumbered: the hole was found again by position, %s is now %s" % (
         ", ".join(edges), ", ".join(renamed))
 
@@ -128,7 +137,7 @@ class FillFeature:
         edges = [s for s in subs if s.startswith("Edge")] or 1
         moved = None
         if edges != 1:
-            edges, moved = followHole(src.Shape, edges, list(obj.HoleSignature))
+            edges, moved = followHole(src.Shape, edges, list(obj.HoleSignature), getattr(src, "Placement", None))
             if moved:  # renamed without touching the Fill: this recompute is the one that uses it
                 obj.setPropertyStatus("Source", "NoRecompute")
                 try:
@@ -146,7 +155,8 @@ class FillFeature:
         obj.Achieved = report["achieved"]
         obj.G0, obj.G1, obj.G2 = report["g0"], report["g1"], report["g2"]
         if edges != 1:
-            obj.HoleSignature = holeSignature(src.Shape, [int(e[4:]) for e in edges], report["edges"])
+            obj.HoleSignature = holeSignature(src.Shape, [int(e[4:]) for e in edges], report["edges"],
+                                              getattr(src, "Placement", None))
         if moved:
             report.setdefault("warnings", []).append(moved)
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, moved))
