@@ -51,6 +51,18 @@ class PreferencePage:
                             ("BidgcnWeights", translate("HoleFill", "BIDGCN (Fit point cloud):"))):
             lay.addRow(label, self.fileRow(name))
         outer.addWidget(learned)
+        box = QtWidgets.QGroupBox(translate("HoleFill", "Fitting"))
+        lay = QtWidgets.QFormLayout(box)
+        fit = QtWidgets.QDoubleSpinBox()
+        fit.setObjectName("FitTolerance")
+        fit.setDecimals(6)
+        fit.setRange(1e-6, 0.5)
+        fit.setSingleStep(1e-4)
+        fit.setSuffix(translate("HoleFill", " of the diagonal"))
+        fit.setToolTip(preferences.SETTINGS["FitTolerance"][1])
+        lay.addRow(translate("HoleFill", "Fit tolerance:"), fit)
+        self.widgets["FitTolerance"] = fit
+        outer.addWidget(box)
         box = QtWidgets.QGroupBox(translate("HoleFill", "Inspection"))
         lay = QtWidgets.QFormLayout(box)
         w = QtWidgets.QComboBox()

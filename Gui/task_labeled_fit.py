@@ -100,8 +100,10 @@ class FitPanel:
         self.preview()
 
     def options(self):
+        from HoleFill import preferences
         return dict(controlPoints=(self.ctrlU.value(), self.ctrlV.value()), extension=self.extension.currentText(),
-                    margin=self.margin.value(), reach=self.reach.value(), relaxLabels=self.relax.isChecked(), **{k: w.value() for k, w in self.weights.items()})
+                    margin=self.margin.value(), reach=self.reach.value(), relaxLabels=self.relax.isChecked(),
+                    tolerance=preferences.get("FitTolerance"), **{k: w.value() for k, w in self.weights.items()})
 
     def preview(self):
         import HoleFill

@@ -60,7 +60,8 @@ class FitPanel:
         self.tolerance.setObjectName("HoleFillPointFitTolerance")
         self.tolerance.setDecimals(6)
         self.tolerance.setRange(1e-6, 1e6)
-        self.tolerance.setValue(float("%.3g" % (1e-3 * self.diagonal)))
+        from HoleFill import preferences
+        self.tolerance.setValue(float("%.3g" % (preferences.get("FitTolerance") * self.diagonal)))
         self.tolerance.setSuffix(translate("HoleFill", " mm"))
         layout.addRow(translate("HoleFill", "Tolerance:"), self.tolerance)
         self.degree = QtWidgets.QSpinBox()

@@ -22,6 +22,7 @@ def test_defaults_are_the_macro_apis():
     assert preferences.get("UvtranWeights") == sig["weights"].default == ""
     assert preferences.get("BidgcnWeights") == inspect.signature(HoleFill.fitPoints).parameters["weights"].default == ""
     assert preferences.get("ZebraRenderer") == "shader"
+    assert preferences.get("FitTolerance") == inspect.signature(HoleFill.fitLabeled).parameters["tolerance"].default == 1e-3
 
 
 def test_values_live_in_freecads_parameters():
@@ -39,7 +40,7 @@ def test_values_live_in_freecads_parameters():
 
 def test_bad_values_are_refused_and_stale_ones_read_as_defaults():
     preferences.reset()
-    for name, value in (("FillMethod", "support"), ("FillContinuity", "G3"), ("FillOutput", "Solid"), ("FillTolerance", -1.0),
+    for name, value in (("FillMethod", "support"), ("FillContinuity", "G3"), ("FillOutput", "Solid"), ("FillTolerance", -1.0), ("FitTolerance", 0.0),
                         ("ZebraRenderer", "opengl"), ("UvtranWeights", "/nonexistent/uvtran.pt"), ("BidgcnWeights", "/nonexistent")):
         try:
             preferences.put(name, value)

@@ -58,6 +58,7 @@ def body():
         page.findChild(QtWidgets.QComboBox, "FillContinuity").setCurrentText("G2")
         page.findChild(QtWidgets.QComboBox, "FillOutput").setCurrentText("Sewn")
         page.findChild(QtWidgets.QComboBox, "ZebraRenderer").setCurrentText("vertex")
+        page.findChild(QtWidgets.QDoubleSpinBox, "FitTolerance").setValue(2e-3)
         page.findChild(QtWidgets.QLineEdit, "UvtranWeights").setText(weights)
         page.findChild(QtWidgets.QLineEdit, "BidgcnWeights").setText("/nonexistent/bidgcn.pt")  # not kept, said why
         h.pump(200)
@@ -79,6 +80,7 @@ def body():
     assert got == ("mvc", "G2", "Sewn"), got
     got = (preferences.get("ZebraRenderer"), preferences.get("UvtranWeights"), preferences.get("BidgcnWeights"))
     assert got == ("vertex", weights, ""), got
+    assert abs(preferences.get("FitTolerance") - 2e-3) < 1e-12, preferences.get("FitTolerance")
 
     # A new fill's panel starts from the preferences.
     doc, src = h.sample_document("GuiPrefs", "Panel", "panel_6_sided")

@@ -9,7 +9,7 @@ import os
 import FreeCAD
 
 import HoleFill
-from HoleFill import fill_feature, inspection, pointcloud
+from HoleFill import fill_feature, inspection, labeled, pointcloud
 
 PATH = "User parameter:BaseApp/Preferences/Mod/HoleFill"
 
@@ -24,6 +24,8 @@ SETTINGS = {
     "UvtranWeights": (_MAKE_FILL["weights"].default, "Fill hole: UVTran's weights file (.pt, from holefill train uvtran); empty: the shipped one"),
     "BidgcnWeights": (inspect.signature(pointcloud.fitPoints).parameters["weights"].default,
                       "Fit point cloud: BIDGCN's weights file (.pt, from holefill train bidgcn); empty: the shipped one"),
+    "FitTolerance": (float(inspect.signature(labeled.fitLabeled).parameters["tolerance"].default),
+                     "Fit labeled surface and Fit point cloud: the data max that ends the refinement, as a fraction of the region's diagonal"),
     "ZebraRenderer": (inspection.ZEBRA_RENDERERS[0], "Zebra stripes: shader draws them per pixel (GLSL); vertex per vertex of the inspection mesh, "
                                 "for OpenGL without shaders (remote X, old drivers), where the shader draws nothing"),
 }
@@ -31,6 +33,7 @@ CHOICES = {"FillMethod": HoleFill.METHODS, "FillContinuity": HoleFill.CONTINUITI
            "ZebraRenderer": inspection.ZEBRA_RENDERERS}
 
 FILES = ("UvtranWeights", "BidgcnWeights")  # paths: empty, or a file that exists when stored
+POSITIVE = ("FillAngularTolerance", "FitTolerance")  # tolerances that 0 would make unreachable
 
 
 def _group():
@@ -44,7 +47,7 @@ def get(name):
     g = _group()
     if isinstance(default, float):
         value = g.GetFloat(name, default)
-        return value if value >= 0 else default
+        return value if value > 0 or (value == 0 and name not in POSITIVE) else default
     value = g.GetString(name, default)
     if name in CHOICES and value not in CHOICES[name]:
         return default
@@ -56,6 +59,8 @@ def put(name, value):
     default = SETTINGS[name][0]
     if isinstance(default, float):
         value = float(value)
+        if name in POSITIVE and not value > 0:
+            raise ValueError("%s must be positive" % name)
         if not value >= 0:
             raise ValueError("%s must be zero or positive" % name)
         _group().SetFloat(name, value)
