@@ -3,6 +3,7 @@ import FreeCAD
 import FreeCADGui
 
 import HoleFillGui
+from HoleFillGui import SelectionError
 
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -40,7 +41,7 @@ class FillMeshHolesCommand:
         from HoleFillGui import inspect_panels, task_meshfill
         try:
             panel = task_meshfill.MeshFillPanel(task_meshfill.mesh_from_selection())
-        except task_meshfill.SelectionError as e:
+        except SelectionError as e:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # a core error on this mesh: say it, change nothing
@@ -65,7 +66,7 @@ class GnurbsSurfaceCommand:
         from HoleFillGui import inspect_panels, task_gnurbs
         try:
             panel = task_gnurbs.GnurbsPanel(task_gnurbs.cage_from_selection())
-        except task_gnurbs.SelectionError as e:
+        except SelectionError as e:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # not a quad cage, or a core error: say it, change nothing
@@ -91,7 +92,7 @@ class LabelBoundaryCommand:
         try:
             mesh, existing = task_labels.mesh_from_selection()
             panel = task_labels.LabelPanel(mesh, existing=existing)
-        except task_labels.SelectionError as e:
+        except SelectionError as e:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # a closed mesh, or a core error: say it, change nothing
@@ -116,7 +117,7 @@ class FitLabeledCommand:
         from HoleFillGui import inspect_panels, task_labeled_fit
         try:
             panel = task_labeled_fit.FitPanel(task_labeled_fit.labels_from_selection())
-        except task_labeled_fit.SelectionError as e:
+        except SelectionError as e:
             inspect_panels._message(str(e))
             return
         FreeCADGui.Control.showDialog(panel)
@@ -137,7 +138,7 @@ class FitPointCloudCommand:
         from HoleFillGui import inspect_panels, task_point_fit
         try:
             panel = task_point_fit.FitPanel(task_point_fit.source_from_selection())
-        except task_point_fit.SelectionError as e:
+        except SelectionError as e:
             inspect_panels._message(str(e))
             return
         FreeCADGui.Control.showDialog(panel)
@@ -188,7 +189,7 @@ class _InspectCommand:
             return
         try:
             panel = self.panel(inspect_panels, inspection_overlay)
-        except inspection_overlay.SelectionError as e:
+        except SelectionError as e:
             inspect_panels._message(str(e))
             return
         except Exception as e:  # a core error on this shape: say it, change nothing

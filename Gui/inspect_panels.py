@@ -2,8 +2,6 @@
 Each applies its overlay (inspection_overlay) to the selection at once and again on every
 change; OK keeps the overlay in the view, Cancel removes it. Running the command again
 while its overlay is shown removes it (toggle)."""
-import json
-
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtGui, QtWidgets

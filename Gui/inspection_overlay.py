@@ -14,15 +14,12 @@ import FreeCADGui
 from pivy import coin
 
 import HoleFill
+from HoleFillGui import SelectionError
 
 translate = FreeCAD.Qt.translate
 
 PREFIX = "HoleFillInspect"
 KINDS = ("Curvature", "Zebra", "Continuity")
-
-
-class SelectionError(Exception):
-    pass
 
 
 def targets_from_selection(allow_whole_objects=True):

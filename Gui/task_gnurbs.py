@@ -8,16 +8,12 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay, task_dialog
+from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
 
 OVERLAY = "HoleFillGnurbsCage"
 COLOR_SHARP, COLOR_EP, COLOR_ANCHOR = (1.0, 0.55, 0.1), (0.9, 0.0, 0.0), (0.1, 0.3, 1.0)
-
-
-class SelectionError(Exception):
-    pass
 
 
 def cage_from_selection():

@@ -8,15 +8,11 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay, task_dialog
+from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
 
 OVERLAY = "HoleFillLabeledFit"
-
-
-class SelectionError(Exception):
-    pass
 
 
 def labels_from_selection():

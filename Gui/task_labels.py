@@ -11,16 +11,12 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay
+from HoleFillGui import SelectionError, scene_overlay
 
 translate = FreeCAD.Qt.translate
 
 OVERLAY = "HoleFillLabels"
 CYCLE = ["N", "E", "S", "W", "-"]
-
-
-class SelectionError(Exception):
-    pass
 
 
 def mesh_from_selection():

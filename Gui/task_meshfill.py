@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay, task_dialog
+from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
 
@@ -19,10 +19,6 @@ COLOR_FILL, COLOR_SKIP, COLOR_PICKED = (1.0, 0.55, 0.1), (0.55, 0.55, 0.55), (0.
 SHAPES = (("Paper (minimum angle, thin plate, bilateral filter)", {}),
           ("Closest to the surface (auto triangulation, C2, no bilateral)",
            {"shapeOrder": 3, "fairIterations": 0, "triangulation": "auto"}))
-
-
-class SelectionError(Exception):
-    pass
 
 
 def mesh_from_selection():

@@ -9,16 +9,12 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import scene_overlay, task_dialog
+from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
 
 OVERLAY = "HoleFillPointFit"
 LEVEL_COLOURS = [(0.1, 0.1, 0.1), (0.1, 0.3, 0.9), (0.0, 0.6, 0.3), (0.85, 0.5, 0.0), (0.8, 0.1, 0.6), (0.6, 0.0, 0.0)]
-
-
-class SelectionError(Exception):
-    pass
 
 
 def source_from_selection():
