@@ -2,7 +2,6 @@
 
 #include "fitting/labeled_fit.h"
 #include "geometry/error.h"
-#include "geometry/json_reader.h"
 #include "geometry/surface_projection.h"
 #include "mesh/mesh_holes.h"
 #include "test_regions.h"
@@ -12,26 +11,6 @@
 #include <random>
 
 using namespace holefill;
-
-TEST(JsonReader, ReadsValuesAndNamesWhereTheTextStopsBeingJson) {
-  const JsonValue v = parseJson(R"( {"a": [1, -2.5e3, true, null], "b": {"c": "x\"y\n"}, "d": false} )");
-  ASSERT_EQ(v.type, JsonValue::Type::Object);
-  ASSERT_NE(v.find("a"), nullptr);
-  EXPECT_EQ(v.find("a")->array.size(), 4u);
-  EXPECT_EQ(v.find("a")->array[1].number, -2500);
-  EXPECT_TRUE(v.find("a")->array[2].boolean);
-  EXPECT_EQ(v.find("a")->array[3].type, JsonValue::Type::Null);
-  EXPECT_EQ(v.find("b")->find("c")->string, "x\"y\n");
-  EXPECT_EQ(v.find("zz"), nullptr);
-  for (const char* bad : {"", "{", "[1,]", "{\"a\" 1}", "\"open", "1 2", "tru", "[1e999]", "{\"a\":\x01}"}) {
-    try {
-      parseJson(bad, "t.json");
-      ADD_FAILURE() << "accepted: " << bad;
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("'t.json' is not valid JSON"), std::string::npos) << e.what();
-    }
-  }
-}
 
 TEST(LabeledFit, ParsesLabelsAndRunsEndToEndOnAFlatRectangle) {
   const auto labels = parseLabelsJson(R"({"segments": [{"label": "S", "vertices": [0, 1, 2]}, {"label": "North", "vertices": [8, 7, 6]}]})");
@@ -263,7 +242,6 @@ TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
   EXPECT_EQ(refined.fit.weakControlPoints, 0);
   EXPECT_LT(refined.fit.log10Condition, 8);
 }
-
 
 // Control points stop being added where what the fit leaves is the scan noise (the discrepancy
 // principle): the region's noise is estimated from the mesh alone, and a fit whose data rms is

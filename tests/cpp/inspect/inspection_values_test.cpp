@@ -8,7 +8,6 @@
 
 #include "brep/sample_models.h"
 #include "geometry/error.h"
-#include "inspect/color_scale.h"
 #include "inspect/shape_tessellation.h"
 
 using namespace holefill;
@@ -73,52 +72,3 @@ TEST(InspectionValues, ParsingNamesAndErrors) {
   EXPECT_THROW(stripeModeFromString(""), Error);
 }
 
-TEST(ColorScale, SignedQuantitiesGetASymmetricDivergingScale) {
-  Eigen::VectorXd v(5);
-  v << -0.1, 0.0, 0.2, 0.5, std::nan("");
-  ColorScaleOptions o;
-  o.lowPercentile = 0;
-  o.highPercentile = 100;
-  const ColorScale s = makeColorScale(v, true, o);
-  EXPECT_TRUE(s.diverging);
-  EXPECT_DOUBLE_EQ(s.low, -0.5);
-  EXPECT_DOUBLE_EQ(s.high, 0.5);
-  const auto mid = s.color(0.0), grey = s.color(std::nan(""));
-  EXPECT_NEAR(mid[0], mid[2], 1e-6);  // zero is the neutral middle
-  EXPECT_FLOAT_EQ(grey[0], 0.5f);
-  EXPECT_GT(s.color(0.5)[0], s.color(0.5)[2]);   // positive red
-  EXPECT_LT(s.color(-0.5)[0], s.color(-0.5)[2]); // negative blue
-  const ColorScale u = makeColorScale(v, false, o);
-  EXPECT_FALSE(u.diverging);
-  EXPECT_DOUBLE_EQ(u.low, -0.1);
-  EXPECT_DOUBLE_EQ(u.high, 0.5);
-}
-
-TEST(ColorScale, PercentilesClampSpikesAndTicksAreInside) {
-  Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(1001, 0.0, 1.0);
-  v(0) = -1e6;  // a spike at a pole
-  const ColorScale s = makeColorScale(v, false, {});
-  EXPECT_NEAR(s.low, 0.02, 1e-3);
-  EXPECT_NEAR(s.high, 0.98, 1e-3);
-  const auto ticks = s.ticks(5);
-  ASSERT_GE(ticks.size(), 3u);
-  for (double t : ticks) {
-    EXPECT_GE(t, s.low - 1e-12);
-    EXPECT_LE(t, s.high + 1e-12);
-  }
-  ColorScaleOptions byValue;
-  byValue.byValue = true;
-  byValue.low = -2;
-  byValue.high = 3;
-  const ColorScale b = makeColorScale(v, true, byValue);
-  EXPECT_EQ(b.low, -2);
-  EXPECT_EQ(b.high, 3);
-  byValue.high = -5;
-  EXPECT_THROW(makeColorScale(v, true, byValue), Error);
-  // A constant field (a sphere) still gets a valid range around its value.
-  const ColorScale c = makeColorScale(Eigen::VectorXd::Constant(10, 0.25), false, {});
-  EXPECT_LT(c.low, 0.25);
-  EXPECT_GT(c.high, 0.25);
-  EXPECT_EQ(tickLabel(0.0), "0");
-  EXPECT_EQ(tickLabel(2.5e-5), "2.50e-05");
-}
