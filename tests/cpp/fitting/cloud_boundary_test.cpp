@@ -5,7 +5,6 @@
 
 #include "fitting/cloud_boundary.h"
 #include "geometry/error.h"
-#include "geometry/flagged_cloud.h"
 
 using namespace holefill;
 
@@ -68,11 +67,3 @@ TEST(CloudBoundary, BadCloudsAreRefused) {
   EXPECT_THROW(detectCloudBoundary(nan), Error);
 }
 
-TEST(FlaggedCloud, BareLinesHaveNoFlagsAndMixingIsRefused) {
-  const FlaggedCloud c = parseFlaggedCloud("0 0 0\n1 0 0\n0 1 0\n");
-  EXPECT_FALSE(c.flagsGiven);
-  EXPECT_FALSE(c.boundaryUVGiven);
-  EXPECT_EQ(c.points.rows(), 3);
-  EXPECT_THROW(parseFlaggedCloud("0 0 0\n1 0 0 1\n"), Error);
-  EXPECT_TRUE(parseFlaggedCloud("0 0 0 1 0 0\n1 0 0 0\n").flagsGiven);
-}

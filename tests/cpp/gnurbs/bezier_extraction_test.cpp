@@ -2,10 +2,8 @@
 
 #include <cmath>
 
-#include "geometry/bezier_patch.h"
 #include "geometry/error.h"
 #include "gnurbs/bezier_extraction.h"
-#include "gnurbs/catmull_clark.h"
 #include "test_cages.h"
 
 using namespace holefill;
@@ -44,22 +42,6 @@ std::vector<double> knotVector(const std::vector<double>& d) {
 }
 
 }  // namespace
-
-TEST(BezierPatch, ElevationAndSplittingKeepTheSurface) {
-  Eigen::MatrixX3d p(16, 3);
-  for (int i = 0; i < 16; ++i) p.row(i) << i / 4, i % 4, std::sin(1.3 * i);
-  const BSplineSurface s = bezierPatch(3, 3, p);
-  const BSplineSurface e = elevateBezier(s, 5, 5);
-  const auto parts = splitBezier(e, 0.5, 0.5);
-  for (double u : {0.0, 0.13, 0.5, 0.77, 1.0})
-    for (double v : {0.0, 0.31, 0.5, 0.9, 1.0}) {
-      EXPECT_LT((e.point(u, v) - s.point(u, v)).norm(), 1e-13);
-      const int k = (v > 0.5 ? 2 : 0) + (u > 0.5 ? 1 : 0);
-      const double su = u > 0.5 ? 2 * u - 1 : 2 * u, sv = v > 0.5 ? 2 * v - 1 : 2 * v;
-      EXPECT_LT((parts[k].point(su, sv) - s.point(u, v)).norm(), 1e-13);
-    }
-  EXPECT_THROW(elevateBezier(s, 2, 3), Error);
-}
 
 TEST(QuadCage, FindsExtraordinaryPointsAndRefusesBadCages) {
   // Five quads around vertex 0: a valence-5 EP with a boundary ring.
@@ -143,40 +125,3 @@ TEST(BezierExtraction, RegularNonUniformCageIsItsTensorProductBSpline) {
   EXPECT_LT(worst, 1e-12);
 }
 
-TEST(CatmullClark, OneStepKeepsVerticesCreasesAndIntervalsAndSeparatesEPs) {
-  const QuadCage cube = testcages::cubeCage();
-  const QuadCage once = catmullClarkStep(cube, CageTopology(cube));
-  const CageTopology t(once);
-  EXPECT_EQ(once.vertices.rows(), 8 + 12 + 6);
-  EXPECT_EQ(t.extraordinaryPoints(), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
-  // The cube's corner rule: (F + 2R + (n−3)V)/n with n = 3 puts the corner at 5/9 of the way.
-  EXPECT_NEAR(once.vertices.row(7).norm(), std::sqrt(3.0) * 5.0 / 9.0, 1e-14);
-  for (int f = 0; f < t.faceCount(); ++f) {
-    int eps = 0;
-    for (int k = 0; k < 4; ++k) eps += t.isExtraordinary(once.quads(f, k));
-    EXPECT_EQ(eps, 1) << f;
-  }
-  // Creases: an open grid's boundary stays on the cage boundary's polygon, sharp edges split into
-  // sharp halves, intervals halve.
-  QuadCage grid;
-  grid.vertices.resize(9, 3);
-  for (int v = 0; v < 9; ++v) grid.vertices.row(v) << v % 3, v / 3, (v == 4 ? 1.0 : 0.0);
-  grid.quads.resize(4, 4);
-  grid.quads << 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7;
-  grid.setSharp(1, 4);
-  grid.setSharp(4, 7);
-  grid.setKnot(0, 1, 3);
-  const QuadCage g1 = catmullClarkStep(grid, CageTopology(grid));
-  EXPECT_NEAR(g1.vertices(1, 1), 0, 1e-15);                     // boundary vertex stays on y = 0
-  EXPECT_NEAR(g1.vertices(4, 2), 0.75, 1e-15);                  // crease vertex: (6·1 + 0 + 0)/8
-  EXPECT_EQ(g1.sharp.size(), 4u);
-  for (std::uint64_t key : g1.sharp) {  // each half runs from an original crease vertex to its edge's midpoint
-    const int lo = static_cast<int>(key & 0xffffffffu), hi = static_cast<int>(key >> 32);
-    EXPECT_TRUE(lo == 1 || lo == 4 || lo == 7) << lo;
-    EXPECT_EQ(g1.vertices(hi, 0), 1.0);
-  }
-  int halves = 0;
-  for (const auto& [key, d] : g1.knots) halves += std::abs(d - 1.5) < 1e-15;
-  EXPECT_EQ(halves, 2);
-  EXPECT_NO_THROW(CageTopology{g1});
-}
