@@ -2,43 +2,15 @@
 
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <gtest/gtest.h>
-#include <zlib.h>
 
-#include <cstdio>
-#include <fstream>
 
 #include "brep/sample_models.h"
 #include "geometry/error.h"
+#include "png_decode.h"
 
 using namespace holefill;
 
 namespace {
-
-// Pixels of the PNG the core wrote, decoded back (one IDAT, filter 0, as encodePng writes).
-RasterImage decode(const std::string& png) {
-  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
-  const auto be = [&](size_t at) {
-    return (static_cast<std::uint32_t>(static_cast<unsigned char>(png[at])) << 24) |
-           (static_cast<std::uint32_t>(static_cast<unsigned char>(png[at + 1])) << 16) |
-           (static_cast<std::uint32_t>(static_cast<unsigned char>(png[at + 2])) << 8) | static_cast<unsigned char>(png[at + 3]);
-  };
-  RasterImage im(static_cast<int>(be(16)), static_cast<int>(be(20)));
-  size_t at = 8;
-  while (at < png.size()) {
-    const std::uint32_t len = be(at);
-    const std::string type = png.substr(at + 4, 4);
-    const std::uint32_t crc = be(at + 8 + len);
-    EXPECT_EQ(crc, crc32(0L, reinterpret_cast<const Bytef*>(png.data() + at + 4), len + 4)) << type;
-    if (type == "IDAT") {
-      uLongf n = (3 * im.width + 1) * im.height;
-      std::string raw(n, '\0');
-      EXPECT_EQ(uncompress(reinterpret_cast<Bytef*>(&raw[0]), &n, reinterpret_cast<const Bytef*>(png.data() + at + 8), len), Z_OK);
-      for (int y = 0; y < im.height; ++y) std::copy_n(raw.begin() + y * (3 * im.width + 1) + 1, 3 * im.width, im.at(0, y));
-    }
-    at += 12 + len;
-  }
-  return im;
-}
 
 struct Stats {
   double covered = 0, dark = 0, light = 0, reddish = 0, bluish = 0;
@@ -71,7 +43,7 @@ TEST(InspectionRender, ZebraSphereShowsBothStripeColoursAndThePngRoundTrips) {
   EXPECT_NEAR(s.covered, M_PI * std::pow(0.92 * 240 / 2, 2) / (320 * 240), 0.03);  // the sphere's disc
   EXPECT_GT(s.dark, 0.1);
   EXPECT_GT(s.light, 0.1);
-  const RasterImage back = decode(encodePng(r.image));
+  const RasterImage back = testpng::decode(encodePng(r.image));
   EXPECT_EQ(back.rgb, r.image.rgb);
 }
 
@@ -88,15 +60,7 @@ TEST(InspectionRender, CurvatureMapOfASaddleFillIsDivergingWithALegend) {
   EXPECT_NE(toJson(r, o).find("\"quantity\":\"gauss\""), std::string::npos);
 }
 
-TEST(InspectionRender, WritesAtomicallyAndRejectsBadOptions) {
-  RasterImage im(4, 3, {1, 2, 3});
-  EXPECT_THROW(writePng(im, "/nonexistent-folder/x.png"), Error);
-  const std::string path = testing::TempDir() + "/holefill_render_test.png";
-  writePng(im, path);
-  std::ifstream f(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(decode(bytes).rgb, im.rgb);
-  std::remove(path.c_str());
+TEST(InspectionRender, RejectsBadOptions) {
   EXPECT_THROW(parseRenderOptions({{"mode", "xray"}}), Error);
   EXPECT_THROW(parseRenderOptions({{"size", "big"}}), Error);
   EXPECT_THROW(parseRenderOptions({{"view", "1,2"}}), Error);
