@@ -3,7 +3,6 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <gtest/gtest.h>
 
-
 #include "brep/sample_models.h"
 #include "geometry/error.h"
 #include "png_decode.h"
