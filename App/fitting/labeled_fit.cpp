@@ -190,10 +190,13 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
       break;
     }
     TensorFitOptions next = fo;
-    next.controlU = std::min(o.maxControl, (3 * fo.controlU + 1) / 2);
-    next.controlV = std::min(o.maxControl, (3 * fo.controlV + 1) / 2);
+    const bool noisy = 5 * r.noise > o.tolerance;
+    const int most = noisy ? std::min(o.maxControl, o.noisyMaxControl) : o.maxControl;
+    next.controlU = std::min(most, (3 * fo.controlU + 1) / 2);
+    next.controlV = std::min(most, (3 * fo.controlV + 1) / 2);
     if (next.controlU == fo.controlU && next.controlV == fo.controlV) {
-      r.refinements.push_back("stopped: " + std::to_string(o.maxControl) + " control points per direction at most");
+      r.refinements.push_back("stopped: " + std::to_string(most) + " control points per direction at most" +
+                              (noisy && most < o.maxControl ? " under scan noise" : ""));
       break;
     }
     TensorFitResult t = fitWith(next);

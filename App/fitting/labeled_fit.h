@@ -46,8 +46,15 @@ struct LabeledFitOptions {
   // and ends the search, when it brings weak control points or a condition of 1e8 or more, or
   // lowers neither the data max nor (by a third) the RMS or the bias. maxControl 0: exactly
   // fit.controlU × controlV.
+  // Where scan noise could be what the fit misses (5 σ above the tolerance), refinement stops at
+  // noisyMaxControl (if maxControl is larger): each step past it follows the noise more than the
+  // surface (bspline_notch_n0p05, 0.05% noise: 1.78e-3 of the diagonal off the truth at 40 × 40,
+  // 3.05e-3 at 48 × 48). A clean region that still misses goes on to maxControl: its misses are the
+  // map's distortion at reflex corners and slots, which finer knots follow (bspline_corner_clean_corners
+  // 1.35e-3 at 40 × 40, 7.3e-4 at 60 × 60; docs/benchmarks.md, twelfth round).
   double tolerance = 1e-3;
-  int maxControl = 40;
+  int maxControl = 60;
+  int noisyMaxControl = 40;
   // How far the untrimmed surface reaches past the domain rectangle, as a fraction of the
   // rectangle's larger side: the extension's margin (a width, kept when its grid is rebuilt
   // finer). Reverse engineering extends a fitted surface past its region so that its neighbours

@@ -504,7 +504,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
      py::arg("extension") = "fit", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
-     py::arg("meshFairness") = 0.0, py::arg("maxControl") = 40, py::arg("tolerance") = 1e-3, py::arg("releaseDepth") = 0.05,
+     py::arg("meshFairness") = 0.0, py::arg("maxControl") = LabeledFitOptions{}.maxControl, py::arg("tolerance") = 1e-3, py::arg("releaseDepth") = 0.05,
      py::arg("relaxLabels") = true, py::arg("reach") = 0.05,
      "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
@@ -580,4 +580,5 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::arg("name"), "OBJ text of a bundled sample cage.");
   m.attr("__version__") = "0.1.0";
   m.attr("defaultMaxBoundary") = MeshFillOptions{}.maxBoundary;  // the doors' default, kept in the core
+  m.attr("defaultMaxControl") = LabeledFitOptions{}.maxControl;  // labeled fitting's, likewise
 }

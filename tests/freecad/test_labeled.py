@@ -100,7 +100,13 @@ def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
     assert sorted(n for n in names if n != "-") == ["E", "N", "S", "W"], names
     fit = HoleFill.makeLabeledFit(lab, controlPoints=(10, 8))
     assert fit.MeshFairness == 0.0
-    assert fit.MaxControlPoints == 40 and fit.Tolerance == 1e-3 and fit.ReleaseDepth == 0.05
+    # The doors' default is the core's (LabeledFitOptions::maxControl), read from it, not copied.
+    import inspect
+    import HoleFillApp
+    assert HoleFillApp.defaultMaxControl == 60
+    for fn in (HoleFill.fitLabeled, HoleFill.makeLabeledFit):
+        assert inspect.signature(fn).parameters["maxControl"].default == HoleFillApp.defaultMaxControl, fn
+    assert fit.MaxControlPoints == HoleFillApp.defaultMaxControl and fit.Tolerance == 1e-3 and fit.ReleaseDepth == 0.05
     import json
     rep = json.loads(fit.Report)
     assert fit.Shape.isValid() and rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3, rep

@@ -28,7 +28,7 @@ def _labelsJson(labels):
 
 
 def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-               meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.05):
+               meshFairness=0.0, maxControl=HoleFillApp.defaultMaxControl, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.05):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -39,7 +39,8 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     guiding frame's placement along their sides), meshFairness (the paper's E_Mesh: how evenly the
     extension's triangles are distorted from their neighbours; 0 leaves it out). Control points:
     from controlPoints, refined by half again per direction while the data max exceeds tolerance
-    (of the region's diagonal), up to maxControl per direction (0: exactly controlPoints); the
+    (of the region's diagonal), up to maxControl per direction (40 where the region's scan noise
+    could be what the fit misses; 0: exactly controlPoints); the
     report's "refinements" lists the tries. releaseDepth: labeled vertices deeper than this
     fraction of their side's chord inside its line, past a sharp turn (a notch, slot, bite), are
     left free for the extension (negative: every labeled vertex held). relaxLabels: where the
@@ -248,7 +249,8 @@ class LabeledFitFeature:
         add("App::PropertyFloat", "MeshFairness", "Weights", "E_Mesh: how evenly the extension's triangles are distorted (0: off)", 0.0)
         add("App::PropertyIntegerConstraint", "MaxControlPoints", "Fit",
             "Control points are refined from ControlPointsU x V up to this many per direction while the data max exceeds "
-            "the tolerance (0: exactly ControlPointsU x V)", (40, 0, 200, 1))
+            "the tolerance (40 at most where scan noise could be the miss; 0: exactly ControlPointsU x V)",
+            (HoleFillApp.defaultMaxControl, 0, 200, 1))
         add("App::PropertyFloat", "Tolerance", "Fit", "Data max (of the region's diagonal) that ends the refinement", 1e-3)
         add("App::PropertyFloat", "ReleaseDepth", "Fit",
             "Labeled vertices deeper than this fraction of their side inside its line, past a sharp turn, are left free "
@@ -287,8 +289,8 @@ class LabeledFitFeature:
 
 
 def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   meshFairness=0.0, maxControl=40, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.05,
-                   name="LabeledFit"):
+                   meshFairness=0.0, maxControl=HoleFillApp.defaultMaxControl, tolerance=1e-3, releaseDepth=0.05,
+                   relaxLabels=True, reach=0.05, name="LabeledFit"):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
