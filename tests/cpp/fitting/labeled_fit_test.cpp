@@ -219,14 +219,26 @@ TEST(LabeledFit, SmoothlyRoundedSidesAreHeldAsLabeled) {
   EXPECT_EQ(r.parameterization.flippedTriangles, 0);
 }
 
+namespace {
+
+// A unit square of a wavy field (0.15 sin 9x cos 7y) on a 30 × 30 grid, labeled by its box: more
+// than 5 × 5 control points can follow, and 1e-3 takes more than 12 × 12.
+TriangleMesh wavySquare(std::vector<LabeledSegment>& labels) {
+  Eigen::MatrixX2d truth;
+  TriangleMesh region = testregions::gridRegion(
+      30, 30, 1.0 / 30, [](double, double) { return true; },
+      [](double x, double y) { return Eigen::Vector3d(x, y, 0.15 * std::sin(9 * x) * std::cos(7 * y)); }, truth);
+  labels = testregions::boundingBoxLabels(region, truth);
+  return region;
+}
+
+}  // namespace
+
 // Control points chosen by the data: refined while the data max is above the tolerance, each try
 // reported; --ctrl-style exact counts when maxControl is 0.
 TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
-  Eigen::MatrixX2d truth;
-  const TriangleMesh region = testregions::gridRegion(
-      30, 30, 1.0 / 30, [](double, double) { return true; },
-      [](double x, double y) { return Eigen::Vector3d(x, y, 0.15 * std::sin(9 * x) * std::cos(7 * y)); }, truth);
-  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  std::vector<LabeledSegment> labels;
+  const TriangleMesh region = wavySquare(labels);
   LabeledFitOptions o;
   o.fit.controlU = o.fit.controlV = 5;
   o.maxControl = 0;
@@ -277,11 +289,8 @@ TEST(LabeledFit, RefinementStopsWhereWhatIsLeftIsScanNoise) {
 // either can give at the default tolerance: the clean one is refined to maxControl, the noisy one
 // stops at noisyMaxControl.
 TEST(LabeledFit, UnderNoiseRefinementStopsAtNoisyMaxControlAndCleanGoesOn) {
-  Eigen::MatrixX2d truth;
-  TriangleMesh region = testregions::gridRegion(
-      30, 30, 1.0 / 30, [](double, double) { return true; },
-      [](double x, double y) { return Eigen::Vector3d(x, y, 0.15 * std::sin(9 * x) * std::cos(7 * y)); }, truth);
-  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  std::vector<LabeledSegment> labels;
+  TriangleMesh region = wavySquare(labels);
   LabeledFitOptions o;
   o.fit.controlU = o.fit.controlV = 5;
   o.noisyMaxControl = 8;
