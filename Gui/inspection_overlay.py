@@ -253,17 +253,16 @@ def zebra_shader(count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection
 
 
 def zebra_shades(points, normals, camera, count=16, width=0.5, angleDeg=0.0, isophote=False, isoDirection=(0.0, 0.0, 1.0)):
-    """The fragment shader's grey per vertex (numpy arrays in, one value in [0, 1] per vertex out),
-    for `camera` (an SoCamera) as it is now; the stripe edges are hard, as the shader's are at a
-    pixel, and are blended across each triangle by the vertex colours."""
+    """The fragment shader's grey per vertex (numpy arrays of points and unit normals in, one value
+    in [0, 1] per vertex out), for `camera` (an SoCamera) as it is now; the stripe edges are hard,
+    as the shader's are at a pixel, and are blended across each triangle by the vertex colours."""
     import math
     import numpy
     rot = camera.orientation.getValue()
     axes = numpy.array([rot.multVec(coin.SbVec3f(*e)).getValue() for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))])
-    n_world = normals / numpy.maximum(numpy.linalg.norm(normals, axis=1), 1e-300)[:, None]
-    n = n_world @ axes.T  # eye space: rows of axes are the camera's x, y, z in world space
+    n = normals @ axes.T  # eye space: rows of axes are the camera's x, y, z in world space
     if isophote:
-        a = n_world
+        a = normals
         d = numpy.asarray(isoDirection, float) / max(numpy.linalg.norm(isoDirection), 1e-300)
     else:
         if camera.isOfType(coin.SoOrthographicCamera.getClassTypeId()):
@@ -285,7 +284,9 @@ class _VertexZebra:
     def __init__(self, mesh, camera, params):
         import numpy
         self.points = numpy.asarray(mesh["points"], float)
-        self.normals = numpy.asarray(mesh["normals"], float)
+        normals = numpy.asarray(mesh["normals"], float)
+        # Unit once here, not at every camera move.
+        self.normals = normals / numpy.maximum(numpy.linalg.norm(normals, axis=1), 1e-300)[:, None]
         self.camera, self.params = camera, params
         self.material = coin.SoMaterial()
         self.light = coin.SoLightModel()

@@ -18,69 +18,58 @@ class PreferencePage:
         self.form.setWindowTitle(translate("HoleFill", "HoleFill"))
         self.form.setObjectName("HoleFillPreferences")
         outer = QtWidgets.QVBoxLayout(self.form)
-        box = QtWidgets.QGroupBox(translate("HoleFill", "Fill hole: starting values of the task panel"))
-        lay = QtWidgets.QFormLayout(box)
         self.widgets = {}
-        for name, label in (("FillMethod", translate("HoleFill", "Parameterization:")), ("FillContinuity", translate("HoleFill", "Continuity:")),
-                            ("FillOutput", translate("HoleFill", "Output:"))):
-            w = QtWidgets.QComboBox()
-            w.setObjectName(name)
-            w.addItems(list(preferences.CHOICES[name]))
-            w.setToolTip(preferences.SETTINGS[name][1])
-            lay.addRow(label, w)
-            self.widgets[name] = w
-        tol = QtWidgets.QDoubleSpinBox()
-        tol.setDecimals(7)
-        tol.setRange(0.0, 1e3)
+        lay = self._group(outer, translate("HoleFill", "Fill hole: starting values of the task panel"))
+        self._combo(lay, "FillMethod", translate("HoleFill", "Parameterization:"))
+        self._combo(lay, "FillContinuity", translate("HoleFill", "Continuity:"))
+        self._combo(lay, "FillOutput", translate("HoleFill", "Output:"))
+        tol = self._number(lay, "FillTolerance", translate("HoleFill", "G0 tolerance:"), 7, 0.0, 1e3)
         tol.setSpecialValueText(translate("HoleFill", "auto (1e-6 of hole size)"))
-        tol.setToolTip(preferences.SETTINGS["FillTolerance"][1])
-        lay.addRow(translate("HoleFill", "G0 tolerance:"), tol)
-        self.widgets["FillTolerance"] = tol
-        ang = QtWidgets.QDoubleSpinBox()
-        ang.setDecimals(6)
-        ang.setRange(1e-6, 0.5)
-        ang.setSingleStep(1e-4)
-        ang.setSuffix(translate("HoleFill", " rad"))
-        ang.setToolTip(preferences.SETTINGS["FillAngularTolerance"][1])
-        lay.addRow(translate("HoleFill", "G1 tolerance:"), ang)
-        self.widgets["FillAngularTolerance"] = ang
-        outer.addWidget(box)
-        learned = QtWidgets.QGroupBox(translate("HoleFill", "Learned models: weights files (empty: the shipped ones)"))
-        lay = QtWidgets.QFormLayout(learned)
-        for name, label in (("UvtranWeights", translate("HoleFill", "UVTran (Fill hole):")),
-                            ("BidgcnWeights", translate("HoleFill", "BIDGCN (Fit point cloud):"))):
-            lay.addRow(label, self.fileRow(name))
-        outer.addWidget(learned)
-        box = QtWidgets.QGroupBox(translate("HoleFill", "Fitting"))
-        lay = QtWidgets.QFormLayout(box)
-        fit = QtWidgets.QDoubleSpinBox()
-        fit.setObjectName("FitTolerance")
-        fit.setDecimals(6)
-        fit.setRange(1e-6, 0.5)
-        fit.setSingleStep(1e-4)
-        fit.setSuffix(translate("HoleFill", " of the diagonal"))
-        fit.setToolTip(preferences.SETTINGS["FitTolerance"][1])
-        lay.addRow(translate("HoleFill", "Fit tolerance:"), fit)
-        self.widgets["FitTolerance"] = fit
-        outer.addWidget(box)
-        box = QtWidgets.QGroupBox(translate("HoleFill", "Inspection"))
-        lay = QtWidgets.QFormLayout(box)
-        w = QtWidgets.QComboBox()
-        w.setObjectName("ZebraRenderer")
-        w.addItems(list(preferences.CHOICES["ZebraRenderer"]))
-        w.setToolTip(preferences.SETTINGS["ZebraRenderer"][1])
-        lay.addRow(translate("HoleFill", "Zebra stripes drawn by:"), w)
-        self.widgets["ZebraRenderer"] = w
-        outer.addWidget(box)
+        self._number(lay, "FillAngularTolerance", translate("HoleFill", "G1 tolerance:"), 6, 1e-6, 0.5, 1e-4,
+                     translate("HoleFill", " rad"))
+        lay = self._group(outer, translate("HoleFill", "Learned models: weights files (empty: the shipped ones)"))
+        self._file(lay, "UvtranWeights", translate("HoleFill", "UVTran (Fill hole):"))
+        self._file(lay, "BidgcnWeights", translate("HoleFill", "BIDGCN (Fit point cloud):"))
+        lay = self._group(outer, translate("HoleFill", "Fitting"))
+        self._number(lay, "FitTolerance", translate("HoleFill", "Fit tolerance:"), 6, 1e-6, 0.5, 1e-4,
+                     translate("HoleFill", " of the diagonal"))
+        lay = self._group(outer, translate("HoleFill", "Inspection"))
+        self._combo(lay, "ZebraRenderer", translate("HoleFill", "Zebra stripes drawn by:"))
         outer.addStretch(1)
 
-    def fileRow(self, name):
+    def _group(self, outer, title):
+        box = QtWidgets.QGroupBox(title)
+        outer.addWidget(box)
+        return QtWidgets.QFormLayout(box)
+
+    def _setting(self, w, name):
+        """`w` edits setting `name`: named after it, its description as tooltip, saved and loaded."""
+        w.setObjectName(name)
+        w.setToolTip(preferences.SETTINGS[name][1])
+        self.widgets[name] = w
+        return w
+
+    def _combo(self, lay, name, label):
+        w = self._setting(QtWidgets.QComboBox(), name)
+        w.addItems(list(preferences.CHOICES[name]))
+        lay.addRow(label, w)
+        return w
+
+    def _number(self, lay, name, label, decimals, low, high, step=None, suffix=""):
+        w = self._setting(QtWidgets.QDoubleSpinBox(), name)
+        w.setDecimals(decimals)
+        w.setRange(low, high)
+        if step is not None:
+            w.setSingleStep(step)
+        w.setSuffix(suffix)
+        lay.addRow(label, w)
+        return w
+
+    def _file(self, lay, name, label):
         row = QtWidgets.QWidget()
         h = QtWidgets.QHBoxLayout(row)
         h.setContentsMargins(0, 0, 0, 0)
-        edit = QtWidgets.QLineEdit()
-        edit.setObjectName(name)
-        edit.setToolTip(preferences.SETTINGS[name][1])
+        edit = self._setting(QtWidgets.QLineEdit(), name)
         edit.setPlaceholderText(translate("HoleFill", "shipped weights"))
         browse = QtWidgets.QToolButton()
         browse.setText("…")
@@ -94,8 +83,8 @@ class PreferencePage:
         browse.clicked.connect(choose)
         h.addWidget(edit, 1)
         h.addWidget(browse)
-        self.widgets[name] = edit
-        return row
+        lay.addRow(label, row)
+        return edit
 
     def loadSettings(self):
         for name, w in self.widgets.items():

@@ -8,6 +8,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
+from HoleFill import preferences
 from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
@@ -96,7 +97,6 @@ class FitPanel:
         self.preview()
 
     def options(self):
-        from HoleFill import preferences
         return dict(controlPoints=(self.ctrlU.value(), self.ctrlV.value()), extension=self.extension.currentText(),
                     margin=self.margin.value(), reach=self.reach.value(), relaxLabels=self.relax.isChecked(),
                     tolerance=preferences.get("FitTolerance"), **{k: w.value() for k, w in self.weights.items()})

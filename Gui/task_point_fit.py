@@ -9,6 +9,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
+from HoleFill import preferences
 from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
@@ -56,7 +57,6 @@ class FitPanel:
         self.tolerance.setObjectName("HoleFillPointFitTolerance")
         self.tolerance.setDecimals(6)
         self.tolerance.setRange(1e-6, 1e6)
-        from HoleFill import preferences
         self.tolerance.setValue(float("%.3g" % (preferences.get("FitTolerance") * self.diagonal)))
         self.tolerance.setSuffix(translate("HoleFill", " mm"))
         layout.addRow(translate("HoleFill", "Tolerance:"), self.tolerance)
@@ -89,7 +89,6 @@ class FitPanel:
         self.preview()
 
     def options(self):
-        from HoleFill import preferences
         return dict(method=self.method.currentText(), tolerance=self.tolerance.value(), degree=self.degree.value(),
                     thb=self.adaptive.isChecked(), weights=preferences.get("BidgcnWeights"))
 

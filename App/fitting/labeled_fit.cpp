@@ -14,6 +14,11 @@ namespace holefill {
 
 namespace {
 
+// Whether the region's scan noise (σ, of the diagonal) could be what a fit misses: 5 σ, about the
+// largest of 20,000 normal deviates, above the tolerance. Such a fit is refined no further than
+// noisyMaxControl, and the relaxed map is tried for fewer control points.
+bool noiseCouldBeTheMiss(double noise, const LabeledFitOptions& o) { return 5 * noise > o.tolerance; }
+
 // Extension, fit and refinement over one map of the region: the labeled one, or the labels
 // relaxed (relaxLabels).
 LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization map, const LabeledFitOptions& o) {
@@ -181,6 +186,8 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
   // max past 5 σ noise (the largest of 20,000 normal deviates is about 4.4 σ): a single vertex
   // missed by more, at a horn's tip or a corner, moves neither the rms nor any neighbourhood's
   // mean (measured: cone_corner_n0p05_cw stopped at 9 × 12 with max 5.6 σ, rms 1.0 σ).
+  const bool noisy = noiseCouldBeTheMiss(r.noise, o);
+  const int most = noisy ? std::min(o.maxControl, o.noisyMaxControl) : o.maxControl;
   while (o.maxControl > 0 && r.fit.dataMax > o.tolerance) {
     if (r.fit.dataRms <= 1.5 * r.noise && bias.max <= r.noise && r.fit.dataMax <= 5 * r.noise) {
       char line[200];
@@ -190,8 +197,6 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
       break;
     }
     TensorFitOptions next = fo;
-    const bool noisy = 5 * r.noise > o.tolerance;
-    const int most = noisy ? std::min(o.maxControl, o.noisyMaxControl) : o.maxControl;
     next.controlU = std::min(most, (3 * fo.controlU + 1) / 2);
     next.controlV = std::min(most, (3 * fo.controlV + 1) / 2);
     if (next.controlU == fo.controlU && next.controlV == fo.controlV) {
@@ -268,7 +273,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   // tried too; of two sound fits the one with fewer control points is kept, since both meet the
   // data within the noise and fewer degrees of freedom follow less of it.
   const auto controlPoints = [](const LabeledFitResult& f) { return f.fit.surface.poles.rows(); };
-  const bool noiseDecides = 5 * r.noise > o.tolerance && r.refinementsKept > 0;
+  const bool noiseDecides = noiseCouldBeTheMiss(r.noise, o) && r.refinementsKept > 0;
   if (o.relaxLabels && !r.labelsRelaxed && (!sound(r) || noiseDecides)) {
     // The labeled map is singular where labels press a boundary that turns onto a straight side
     // (a crescent's inner arc, a slot's walls, an L's inner corner under the bounding-box rule),

@@ -39,6 +39,15 @@ def pixels(path):
     return cov / n, dark / n, light / n, sat / n
 
 
+def striped_shot(view, name):
+    """Saves the view as `name` and asserts it shows stripes (dark and light pixels); returns
+    (share covered, share dark, share light)."""
+    view.saveImage(h.shot(name), 1024, 768, "White")
+    cov, dark, light, sat = pixels(h.shot(name))
+    assert dark > 0.05 and light > 0.05, (dark, light)
+    return cov, dark, light
+
+
 def button(which):
     for box in FreeCADGui.getMainWindow().findChildren(QtWidgets.QDialogButtonBox):
         b = box.button(which)
@@ -107,10 +116,7 @@ def body():
     FreeCADGui.runCommand("HoleFill_ZebraStripes")
     h.pump(1500)
     assert len(overlays("Zebra")) == 2
-    view.saveImage(h.shot("gui_inspect_2_zebra_iso.png"), 1024, 768, "White")
-    cov, dark, light, sat = pixels(h.shot("gui_inspect_2_zebra_iso.png"))
-    info["zebra_pixels"] = (cov, dark, light)
-    assert dark > 0.05 and light > 0.05, (dark, light)
+    info["zebra_pixels"] = striped_shot(view, "gui_inspect_2_zebra_iso.png")
     view.viewTop()
     h.pump(500)
     view.saveImage(h.shot("gui_inspect_3_zebra_top.png"), 1024, 768, "White")
@@ -141,10 +147,7 @@ def body():
         greys = [mat.diffuseColor[i][0] for i in range(mat.diffuseColor.getNum())]
         info["vertex_zebra_light_share"] = sum(g > 0.5 for g in greys) / len(greys)
         assert 0.05 < info["vertex_zebra_light_share"] < 0.95, info["vertex_zebra_light_share"]
-        view.saveImage(h.shot("gui_inspect_2b_zebra_vertex_iso.png"), 1024, 768, "White")
-        cov, dark, light, sat = pixels(h.shot("gui_inspect_2b_zebra_vertex_iso.png"))
-        info["vertex_zebra_pixels"] = (cov, dark, light)
-        assert dark > 0.05 and light > 0.05, (dark, light)
+        info["vertex_zebra_pixels"] = striped_shot(view, "gui_inspect_2b_zebra_vertex_iso.png")
         view.viewTop()
         h.pump(500)
         turned = [mat.diffuseColor[i][0] for i in range(mat.diffuseColor.getNum())]
