@@ -54,10 +54,10 @@ class _Panel:
         finally:
             QtWidgets.QApplication.restoreOverrideCursor()
 
-    def mesh(self, obj, faces, angle):
-        key = (obj.Name, tuple(faces or ()), angle, obj.Shape.hashCode())
+    def mesh(self, obj, faces, angle, maxVertices=None):
+        key = (obj.Name, tuple(faces or ()), angle, obj.Shape.hashCode(), maxVertices)
         if key not in self.meshes:
-            self.meshes[key] = overlay.bounded_mesh(obj, faces, angle, "%s of" % self.kind)
+            self.meshes[key] = overlay.bounded_mesh(obj, faces, angle, "%s of" % self.kind, maxVertices)
         return self.meshes[key]
 
 
@@ -179,10 +179,12 @@ class ZebraPanel(_Panel):
     def applyTo(self, obj, faces):
         import math
         a = math.radians(self.angle.value())
+        renderer = preferences.get("ZebraRenderer")
         mesh = overlay.show_zebra(obj, faces, count=self.count.value(), width=self.width.value(),
                                   angleDeg=self.angle.value(), isophote=self.mode.currentIndex() == 1,
                                   isoDirection=(math.cos(a), 0.0, math.sin(a)) if self.mode.currentIndex() == 1 else (0, 0, 1),
-                                  mesh=self.mesh(obj, faces, 2.0), renderer=preferences.get("ZebraRenderer"))
+                                  mesh=self.mesh(obj, faces, 2.0, overlay.zebra_vertex_budget(renderer)),
+                                  renderer=renderer)
         return "%s: %d vertices, neighbouring normals within %.2f deg" % (
             obj.Label, len(mesh["points"]), math.degrees(max(mesh["maxInteriorNormalAngle"], mesh["maxBoundaryNormalAngle"])))
 

@@ -69,10 +69,10 @@ def view_vertex_budget():
     return max(200000, 2 * int(w) * int(h))
 
 
-def bounded_mesh(obj, faces, maxNormalAngle=2.0, what="Tessellating"):
-    """HoleFill.inspectionMesh bounded by the view and INTERACTIVE_SECONDS, with a cancellable
-    progress dialog; cancelling raises HoleFillError. A mesh that stopped at a bound carries
-    stoppedByBudget and its warnings, which go to the report view."""
+def bounded_mesh(obj, faces, maxNormalAngle=2.0, what="Tessellating", maxVertices=None):
+    """HoleFill.inspectionMesh bounded by the view (or maxVertices) and INTERACTIVE_SECONDS, with a
+    cancellable progress dialog; cancelling raises HoleFillError. A mesh that stopped at a bound
+    carries stoppedByBudget and its warnings, which go to the report view."""
     from PySide2 import QtCore, QtWidgets
     dlg = QtWidgets.QProgressDialog("%s %s..." % (what, obj.Label), translate("HoleFill", "Cancel"), 0, 100, FreeCADGui.getMainWindow())
     dlg.setWindowModality(QtCore.Qt.WindowModal)
@@ -84,7 +84,7 @@ def bounded_mesh(obj, faces, maxNormalAngle=2.0, what="Tessellating"):
         return not dlg.wasCanceled()
 
     try:
-        mesh = HoleFill.inspectionMesh(obj.Shape, faces, maxNormalAngle, maxVertices=view_vertex_budget(),
+        mesh = HoleFill.inspectionMesh(obj.Shape, faces, maxNormalAngle, maxVertices=maxVertices or view_vertex_budget(),
                                        timeLimit=INTERACTIVE_SECONDS, progress=progress)
     finally:
         dlg.close()
@@ -277,9 +277,23 @@ def zebra_shades(points, normals, camera, count=16, width=0.5, angleDeg=0.0, iso
     return numpy.where(white, 0.97, 0.06) * (0.8 + 0.2 * numpy.abs(n[:, 2]))
 
 
+# The per-vertex zebra recomputes every vertex's grey in Python at each camera change, so its mesh
+# is bounded by what a turn of the view can afford, not by the view's pixels: measured on this
+# project's VM (AMD EPYC, both cores busy with a build), shades plus upload to Coin took 0.09 s
+# at 200,000 vertices, 0.96 s at 1 million and 3.6 s at 4 million (a full-HD view's budget).
+VERTEX_ZEBRA_VERTICES = 200000
+
+
+def zebra_vertex_budget(renderer):
+    """The zebra mesh's vertex bound for `renderer`: VERTEX_ZEBRA_VERTICES for the per-vertex one,
+    None (the view's) for the shader."""
+    return VERTEX_ZEBRA_VERTICES if renderer == "vertex" else None
+
+
 class _VertexZebra:
     """Per-vertex stripes that follow the view: the material's colours are recomputed whenever the
-    camera turns or moves (a sensor on its orientation and position)."""
+    camera changes (one sensor on the camera node: a turn that moves its orientation and position
+    at once is one update, not two)."""
 
     def __init__(self, mesh, camera, params):
         import numpy
@@ -293,11 +307,8 @@ class _VertexZebra:
         self.light.model = coin.SoLightModel.BASE_COLOR  # the grey already holds the shading
         self.binding = coin.SoMaterialBinding()
         self.binding.value = coin.SoMaterialBinding.PER_VERTEX_INDEXED
-        self.sensors = []
-        for field in (camera.orientation, camera.position):
-            sensor = coin.SoFieldSensor(self._changed, None)
-            sensor.attach(field)
-            self.sensors.append(sensor)
+        self.sensor = coin.SoNodeSensor(self._changed, None)
+        self.sensor.attach(camera)
         self.update()
 
     def _changed(self, data, sensor):
@@ -310,9 +321,7 @@ class _VertexZebra:
         self.material.diffuseColor.setValues(0, len(rgb), rgb)
 
     def detach(self):
-        for sensor in self.sensors:
-            sensor.detach()
-        self.sensors = []
+        self.sensor.detach()
 
 
 _VERTEX_ZEBRAS = {}  # overlay node name -> its _VertexZebra, alive while the overlay is shown
@@ -325,7 +334,7 @@ def show_zebra(obj, faces, count=16, width=0.5, angleDeg=0.0, isophote=False, is
     from HoleFill.inspection import ZEBRA_RENDERERS
     if renderer not in ZEBRA_RENDERERS:
         raise HoleFill.HoleFillError("unknown zebra renderer '%s': use %s" % (renderer, ", ".join(ZEBRA_RENDERERS)))
-    mesh = mesh or bounded_mesh(obj, faces, maxNormalAngle, "Zebra stripes of")
+    mesh = mesh or bounded_mesh(obj, faces, maxNormalAngle, "Zebra stripes of", zebra_vertex_budget(renderer))
     if renderer == "shader":
         node = _add("Zebra", obj, _surface_nodes(mesh, [zebra_shader(count, width, angleDeg, isophote, isoDirection)]))
     else:
