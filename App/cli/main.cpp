@@ -14,11 +14,11 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,19 +26,15 @@
 #include "brep/hole_detection.h"
 #include "brep/sample_models.h"
 #include "brep/shape_io.h"
-#include "brep/thb_faces.h"
 #include "fill/adjacent_holes.h"
 #include "fill/hole_fill.h"
 #include "geometry/text_file.h"
-#include "fitting/cloud_boundary.h"
 #include "fitting/cloud_parameterization.h"
 #include "fitting/labeled_fit.h"
-#include "fitting/thb_fit.h"
+#include "fitting/point_cloud_fit.h"
 #include "geometry/flagged_cloud.h"
 #include "gnurbs/cage_io.h"
-#include "gnurbs/gnurbs_brep.h"
-#include "gnurbs/gnurbs_fit.h"
-#include "gnurbs/gnurbs_report.h"
+#include "gnurbs/gnurbs_build.h"
 #include "gnurbs/sample_cages.h"
 #include "geometry/atomic_file.h"
 #include "geometry/bspline_surface.h"
@@ -419,73 +415,48 @@ int cmdGnurbs(const Args& a) {
   QuadCage cage = readCage(a.input);
   if (a.has("--sharp")) addSharpEdgesFromJson(cage, readFileBytes(a.get("--sharp"), 1 << 26), a.get("--sharp"));
   if (a.has("--anchors")) addAnchorsFromJson(cage, readFileBytes(a.get("--anchors"), 1 << 26), a.get("--anchors"));
-  G2GnurbsOptions o;
-  o.refineWhenNeeded = !a.has("--no-refine");
+  GnurbsBuildOptions o;
+  o.surface.refineWhenNeeded = !a.has("--no-refine");
+  o.brep.mergeRegular = a.has("--merge-regular");
   if (a.has("--max-valence")) {
     const double m = number(a.get("--max-valence"), "--max-valence");
     if (!(m >= 0) || m != std::floor(m)) throw Error("--max-valence must be a whole number, 0 for no limit");
-    o.maxValence = static_cast<int>(m);
+    o.surface.maxValence = static_cast<int>(m);
   }
-  const auto t0 = std::chrono::steady_clock::now();
-  std::string fitJson;
-  G2GnurbsResult r;
-  if (a.has("--fit")) {
-    GnurbsFitOptions fo;
-    fo.surface = o;
-    if (a.has("--fit-rounds")) fo.iterations = static_cast<int>(number(a.get("--fit-rounds"), "--fit-rounds"));
-    const Eigen::MatrixX3d target = readPoints(a.get("--fit"));
-    const GnurbsFitResult f = fitGnurbs(cage, target, fo);
-    r = f.surface;
-    cage = f.cage;
-    JsonWriter j;
-    j.beginObject()
-        .field("points", static_cast<int>(target.rows()))
-        .field("variables", f.variables)
-        .field("d_max_percent", 100 * f.dMax)
-        .field("d_avg_percent", 100 * f.dAvg)
-        .field("sharp_points", f.sharpPoints)
-        .field("d_max_sharp_percent", 100 * f.dMaxSharp)
-        .field("d_avg_sharp_percent", 100 * f.dAvgSharp)
-        .field("seconds", f.seconds)
-        .endObject();
-    fitJson = j.str();
-    if (!a.has("--json"))
-      std::printf("fit to %s: d_max %.4f%%, d_avg %.5f%% of the target's diagonal (sharp regions: %.4f%%, %.5f%% over %d points), %.2f s\n",
-                  a.get("--fit").c_str(), 100 * f.dMax, 100 * f.dAvg, 100 * f.dMaxSharp, 100 * f.dAvgSharp, f.sharpPoints, f.seconds);
-  } else {
-    if (a.has("--cage-out")) throw Error("gnurbs: --cage-out needs --fit (the cage is only changed by fitting)");
-    r = buildG2Gnurbs(cage, o);
-  }
-  GnurbsBrepOptions bo;
-  bo.mergeRegular = a.has("--merge-regular");
-  const GnurbsBrep b = gnurbsToBrep(r, bo);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const GnurbsContinuity c = measureGnurbsContinuity(r);
+  if (a.has("--fit-rounds")) o.fit.iterations = static_cast<int>(number(a.get("--fit-rounds"), "--fit-rounds"));
+  if (a.has("--cage-out") && !a.has("--fit")) throw Error("gnurbs: --cage-out needs --fit (the cage is only changed by fitting)");
+  std::optional<Eigen::MatrixX3d> target;
+  if (a.has("--fit")) target = readPoints(a.get("--fit"));
+  const GnurbsBuildResult r = buildGnurbs(cage, o, target ? &*target : nullptr);
   const std::string sidecar = out.substr(0, out.size() - ext.size() - 1) + ".faces.json";
   OutputSet outputs;
-  outputs.write(out, [&](const std::string& p) { writeShape(b.shape, p); });
-  outputs.write(sidecar, [&](const std::string& p) { writeFileAtomically(p, b.sidecarJson + "\n"); });
-  if (a.has("--cage-out")) outputs.write(a.get("--cage-out"), [&](const std::string& p) { writeFileAtomically(p, formatCageObj(cage)); });
+  outputs.write(out, [&](const std::string& p) { writeShape(r.brep.shape, p); });
+  outputs.write(sidecar, [&](const std::string& p) { writeFileAtomically(p, r.brep.sidecarJson + "\n"); });
+  if (a.has("--cage-out")) outputs.write(a.get("--cage-out"), [&](const std::string& p) { writeFileAtomically(p, formatCageObj(r.cage)); });
   outputs.commit();
   if (a.has("--json")) {
-    std::string report = gnurbsReportJson(r, c, &b, seconds);
-    if (!fitJson.empty()) report = report.substr(0, report.size() - 1) + ",\"fit\":" + fitJson + "}";
-    std::cout << report << "\n";
+    std::cout << r.toJson() << "\n";
   } else {
-    std::printf("cage: %d vertices, %d quads%s; %zu extraordinary points, %d faces in their 1-rings\n", static_cast<int>(r.cage.vertices.rows()),
-                static_cast<int>(r.cage.quads.rows()), r.refinements ? " after one Catmull-Clark step" : "", r.extraordinaryPoints.size(),
-                r.irregularFaces);
-    if (r.refinements) std::printf("refined because %s\n", r.refinementReason.c_str());
+    const G2GnurbsResult& s = r.surface;
+    const GnurbsBrep& b = r.brep;
+    const GnurbsContinuity& c = r.continuity;
+    if (r.fit)
+      std::printf("fit to %s: d_max %.4f%%, d_avg %.5f%% of the target's diagonal (sharp regions: %.4f%%, %.5f%% over %d points), %.2f s\n",
+                  a.get("--fit").c_str(), 100 * r.fit->dMax, 100 * r.fit->dAvg, 100 * r.fit->dMaxSharp, 100 * r.fit->dAvgSharp,
+                  r.fit->sharpPoints, r.fit->seconds);
+    std::printf("cage: %d vertices, %d quads%s; %zu extraordinary points, %d faces in their 1-rings\n", static_cast<int>(s.cage.vertices.rows()),
+                static_cast<int>(s.cage.quads.rows()), s.refinements ? " after one Catmull-Clark step" : "", s.extraordinaryPoints.size(),
+                s.irregularFaces);
+    if (s.refinements) std::printf("refined because %s\n", s.refinementReason.c_str());
     std::printf("patches: %d B-rep faces in %s shell (%d free edges, %s), %.3f s\n", b.faces, b.closed ? "a closed" : "an open", b.freeEdges,
-                b.valid ? "valid" : "INVALID", seconds);
+                b.valid ? "valid" : "INVALID", r.seconds);
     std::printf("continuity over %d cage edges: spokes G1 %.2e rad, G2 %.2e; elsewhere G1 %.2e rad, G2 %.2e; G0 %.1e\n", c.edges, c.g1Spokes,
                 c.g2Spokes, c.g1Elsewhere, c.g2Elsewhere, c.g0);
     std::printf("wrote %s and %s\n", out.c_str(), sidecar.c_str());
   }
-  for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   // An invalid shell is written (to look at) but never passes as a success.
-  if (!b.valid) std::fprintf(stderr, "warning: the B-rep shell is invalid (BRepCheck): do not use it as it is\n");
-  return r.warnings.empty() && b.valid ? 0 : 3;
+  for (const auto& w : r.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return r.sound() ? 0 : 3;
 }
 
 // Exit 0 when written, 3 when written with warnings (folded triangles, an invalid trimmed face, the data missed).
@@ -551,15 +522,20 @@ int cmdFit(const Args& a) {
   return r.parameterization.flippedTriangles > 0 || !r.fit.valid || !r.metTolerance ? 3 : 0;
 }
 
-// A point-cloud file; bare x y z lines get their boundary found (reported on stderr).
-FlaggedCloud readCloud(const std::string& path) {
-  FlaggedCloud c = parseFlaggedCloud(readFileBytes(path, std::size_t(1) << 30), path);
-  if (!c.flagsGiven) {
-    const CloudBoundary b = detectCloudBoundary(c.points);
-    c.boundary = b.boundary;
-    std::fprintf(stderr, "no boundary flags: found %d boundary points (alpha shape, spacing %.3g)\n", b.count, b.spacing);
+// A point-cloud file as flagged; bare x y z lines are completed by the core (point_cloud_fit.h).
+FlaggedCloud readCloud(const std::string& path) { return parseFlaggedCloud(readFileBytes(path, std::size_t(1) << 30), path); }
+
+void reportFound(const CloudBoundaryCompletion& c) {
+  if (c.found >= 0) std::fprintf(stderr, "no boundary flags: found %d boundary points (alpha shape, spacing %.3g)\n", c.found, c.spacing);
+}
+
+std::vector<int> cornerList(const Args& a) {
+  std::vector<int> corners;
+  if (a.has("--corners")) {
+    std::istringstream in(a.get("--corners"));
+    for (std::string t; std::getline(in, t, ',');) corners.push_back(static_cast<int>(number(t, "--corners")));
   }
-  return c;
+  return corners;
 }
 
 // Exit 0 when written (with warnings on stderr).
@@ -571,14 +547,7 @@ int cmdParam(const Args& a) {
   if (a.has("--radius")) o.radius = number(a.get("--radius"), "--radius");
   o.weightsFile = a.get("--weights", "");
   FlaggedCloud c = readCloud(a.input);
-  if (!c.boundaryUVGiven || a.has("--corners")) {
-    std::vector<int> corners;
-    if (a.has("--corners")) {
-      std::istringstream in(a.get("--corners"));
-      for (std::string t; std::getline(in, t, ',');) corners.push_back(static_cast<int>(number(t, "--corners")));
-    }
-    c.uv = boundaryChordParameters(c.points, c.boundary, corners);
-  }
+  reportFound(completeCloudBoundary(c, cornerList(a), a.has("--corners")));
   const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, o);
   std::ostringstream text;
   text.precision(17);
@@ -601,36 +570,29 @@ int cmdParam(const Args& a) {
 int cmdFitPoints(const Args& a) {
   if (a.input.empty()) throw Error("fit-points: no point cloud given (lines x y z flag [u v])");
   if (!a.has("--out")) throw Error("fit-points: --out OUT.brep (or .step) is required");
-  CloudParameterizationOptions po;
-  po.weights = cloudWeightsByName(a.get("--param", "shape"));
-  po.weightsFile = a.get("--weights", "");
-  ThbFitOptions fo;
-  if (a.has("--degree")) fo.degree = static_cast<int>(number(a.get("--degree"), "--degree"));
-  if (a.has("--tolerance")) fo.tolerance = number(a.get("--tolerance"), "--tolerance");
-  if (a.has("--cells")) fo.baseCells = static_cast<int>(number(a.get("--cells"), "--cells"));
-  if (a.has("--iterations")) fo.maxIterations = static_cast<int>(number(a.get("--iterations"), "--iterations"));
-  if (!a.has("--thb")) fo.maxLevels = 1;  // one uniform level: plain least squares with parameter correction
-  if (fo.degree < 1 || fo.degree > 7) throw Error("--degree must be 1 to 7");
-  if (!(fo.tolerance > 0)) throw Error("--tolerance must be positive");
-  FlaggedCloud c = readCloud(a.input);
-  if (!c.boundaryUVGiven) c.uv = boundaryChordParameters(c.points, c.boundary);
-  const CloudParameterization p = parameterizeCloud(c.points, c.boundary, c.uv, po);
-  const ThbFitResult r = fitThb(c.points, p.uv, fo);
-  writeShape(a.has("--faces") ? thbCellFaces(r.space, r.surface) : TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face()),
-             a.get("--out"));
+  PointCloudFitOptions o;
+  o.parameterization.weights = cloudWeightsByName(a.get("--param", "shape"));
+  o.parameterization.weightsFile = a.get("--weights", "");
+  if (a.has("--degree")) o.fit.degree = static_cast<int>(number(a.get("--degree"), "--degree"));
+  if (a.has("--tolerance")) o.fit.tolerance = number(a.get("--tolerance"), "--tolerance");
+  if (a.has("--cells")) o.fit.baseCells = static_cast<int>(number(a.get("--cells"), "--cells"));
+  if (a.has("--iterations")) o.fit.maxIterations = static_cast<int>(number(a.get("--iterations"), "--iterations"));
+  if (!a.has("--thb")) o.fit.maxLevels = 1;  // one uniform level: plain least squares with parameter correction
+  o.cellFaces = a.has("--faces");
+  const PointCloudFitResult r = fitPointCloud(readCloud(a.input), o);
+  reportFound(r.completion);
+  writeShape(r.shape, a.get("--out"));
   if (a.has("--json")) {
-    std::cout << "{\"parameterization\":" << p.toJson() << "," << r.toJson().substr(1) << "\n";
+    std::cout << r.toJson() << "\n";
   } else {
-    for (const auto& h : r.history)
+    for (const auto& h : r.fit.history)
       std::printf("%5d functions: mse %.2e, max error %.2e of the diagonal; %d cells refined, %d parameters corrected\n", h.dof, h.mse, h.maxError,
                   h.refinedCells, h.correctedParameters);
-    std::printf("%s after %zu iterations, %d levels; wrote %s\n", r.metTolerance ? "tolerance met" : "tolerance NOT met", r.history.size(),
-                r.space.levels(), a.get("--out").c_str());
+    std::printf("%s after %zu iterations, %d levels; wrote %s\n", r.fit.metTolerance ? "tolerance met" : "tolerance NOT met", r.fit.history.size(),
+                r.fit.space.levels(), a.get("--out").c_str());
   }
-  if (r.folds > 0)
-    std::fprintf(stderr, "warning: the surface folds at %d of 4225 domain samples (crowded or crossing parameters): "
-                         "try --param shape\n", r.folds);
-  return r.metTolerance ? 0 : 3;
+  for (const auto& w : r.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return r.fit.metTolerance ? 0 : 3;
 }
 
 int cmdSamples(const Args& a) {

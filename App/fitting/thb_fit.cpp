@@ -32,13 +32,19 @@ Eigen::SparseMatrix<double> finestMap(const ThbSpace& s, std::vector<double>& Uu
 
 }  // namespace
 
-std::string ThbFitResult::toJson() const {
-  JsonWriter j;
-  j.beginObject().key("iterations").beginArray();
+void ThbFitResult::writeFields(JsonWriter& j) const {
+  j.key("iterations").beginArray();
   for (const auto& h : history)
     j.beginObject().field("dof", h.dof).field("mse", h.mse).field("max_error", h.maxError).field("refined_cells", h.refinedCells)
         .field("corrected_parameters", h.correctedParameters).endObject();
-  j.endArray().field("levels", space.levels()).field("met_tolerance", metTolerance).field("folds", folds).endObject();
+  j.endArray().field("levels", space.levels()).field("met_tolerance", metTolerance).field("folds", folds);
+}
+
+std::string ThbFitResult::toJson() const {
+  JsonWriter j;
+  j.beginObject();
+  writeFields(j);
+  j.endObject();
   return j.str();
 }
 

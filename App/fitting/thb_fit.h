@@ -17,6 +17,8 @@
 
 namespace holefill {
 
+class JsonWriter;
+
 struct ThbFitOptions {
   int degree = 3;
   int baseCells = 4;              // cells per direction at level 0
@@ -46,7 +48,8 @@ struct ThbFitResult {
   int folds = 0;                  // of 65 × 65 domain samples, those whose normal opposes the cloud's best-fit
                                   // plane normal (or vanishes): the surface folds there although the points
                                   // may all be within the tolerance (crowded or crossing parameters)
-  std::string toJson() const;     // iterations (dof, mse, max error, refined cells, corrected parameters), levels, met_tolerance
+  std::string toJson() const;     // iterations (dof, mse, max error, refined cells, corrected parameters), levels, met_tolerance, folds
+  void writeFields(JsonWriter& j) const;  // the same fields into an object the caller has open (a larger report)
 };
 
 // `uv` in [0, 1]² per point. Throws Error for fewer points than the base space has functions,

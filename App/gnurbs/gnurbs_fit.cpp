@@ -99,6 +99,7 @@ std::vector<Footpoint> project(const G2GnurbsResult& s, const Eigen::MatrixX3d& 
 GnurbsFitResult fitGnurbs(const QuadCage& initial, const Eigen::MatrixX3d& target, const GnurbsFitOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (target.rows() == 0) throw Error("the fitting target has no points");
+  if (o.iterations < 0) throw Error("the fit takes zero or more rounds");
   if (!target.allFinite()) throw Error("the fitting target has a point with a non-finite coordinate");
   const double diagonal = (target.colwise().maxCoeff() - target.colwise().minCoeff()).norm();
   if (!(diagonal > 0)) throw Error("the fitting target's points all coincide");
@@ -106,6 +107,7 @@ GnurbsFitResult fitGnurbs(const QuadCage& initial, const Eigen::MatrixX3d& targe
 
   GnurbsFitResult r;
   r.cage = initial;
+  r.points = static_cast<int>(target.rows());
   std::vector<int> anchorIds;
   if (o.fitAnchors)
     for (const auto& [v, a] : initial.anchors) anchorIds.push_back(v);

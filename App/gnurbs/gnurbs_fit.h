@@ -35,6 +35,7 @@ struct GnurbsFitResult {
   int sharpPoints = 0;
   std::vector<double> dAvgPerRound;       // before the first fit, then after each round
   int variables = 0;                      // cage vertices + anchors
+  int points = 0;                         // of the target
   double seconds = 0;
 };
 

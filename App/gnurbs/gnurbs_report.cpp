@@ -35,7 +35,7 @@ GnurbsContinuity measureCageContinuity(const QuadCage& cage, const FaceJetFuncti
   return c;
 }
 
-std::string gnurbsReportJson(const G2GnurbsResult& r, const GnurbsContinuity& c, const GnurbsBrep* brep, double seconds) {
+std::string gnurbsReportJson(const G2GnurbsResult& r, const GnurbsContinuity& c, const GnurbsBrep* brep, double seconds, const GnurbsFitResult* fit) {
   JsonWriter j;
   j.beginObject()
       .field("cage_vertices", static_cast<int>(r.cage.vertices.rows()))
@@ -68,6 +68,19 @@ std::string gnurbsReportJson(const G2GnurbsResult& r, const GnurbsContinuity& c,
         .field("free_edges", brep->freeEdges)
         .field("closed", brep->closed)
         .field("valid", brep->valid)
+        .endObject();
+  }
+  if (fit) {
+    j.key("fit")
+        .beginObject()
+        .field("points", fit->points)
+        .field("variables", fit->variables)
+        .field("d_max_percent", 100 * fit->dMax)
+        .field("d_avg_percent", 100 * fit->dAvg)
+        .field("sharp_points", fit->sharpPoints)
+        .field("d_max_sharp_percent", 100 * fit->dMaxSharp)
+        .field("d_avg_sharp_percent", 100 * fit->dAvgSharp)
+        .field("seconds", fit->seconds)
         .endObject();
   }
   j.field("seconds", seconds).field("warnings", r.warnings).endObject();

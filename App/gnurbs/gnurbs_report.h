@@ -7,6 +7,7 @@
 
 #include "gnurbs/g2_gnurbs.h"
 #include "gnurbs/gnurbs_brep.h"
+#include "gnurbs/gnurbs_fit.h"
 
 namespace holefill {
 
@@ -23,7 +24,8 @@ struct GnurbsContinuity {
 GnurbsContinuity measureCageContinuity(const QuadCage& cage, const FaceJetFunction& jet, int samplesPerEdge = 21);
 GnurbsContinuity measureGnurbsContinuity(const G2GnurbsResult& result, int samplesPerEdge = 21);
 
+// `fit`: the distances of a fit to a target (gnurbs_fit.h), reported under "fit"; null for a build.
 std::string gnurbsReportJson(const G2GnurbsResult& result, const GnurbsContinuity& continuity, const GnurbsBrep* brep,
-                             double seconds);
+                             double seconds, const GnurbsFitResult* fit = nullptr);
 
 }  // namespace holefill

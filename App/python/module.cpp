@@ -8,8 +8,8 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
 #include <array>
-#include <chrono>
 #include <map>
+#include <optional>
 #include <memory>
 #include <tuple>
 #include <Standard_Failure.hxx>
@@ -28,13 +28,11 @@
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "fitting/cloud_parameterization.h"
-#include "fitting/thb_fit.h"
-#include "fitting/cloud_boundary.h"
+#include "fitting/point_cloud_fit.h"
 #include "fitting/labeled_fit.h"
 #include "gnurbs/cage_io.h"
 #include "fill/adjacent_holes.h"
-#include "gnurbs/gnurbs_brep.h"
-#include "gnurbs/gnurbs_report.h"
+#include "gnurbs/gnurbs_build.h"
 #include "gnurbs/sample_cages.h"
 #include "inspect/inspection_render.h"
 #include "learn/learn_library.h"
@@ -416,7 +414,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
      "BREP of a Catmull-Clark extraordinary-point hole ring (bicubic patches around a valence-N hole).");
   m.def("gnurbsSurface", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixXi& quads,
                             const std::vector<std::tuple<int, int, double>>& knots, const std::vector<std::pair<int, int>>& sharpEdges,
-                            const std::map<int, std::array<double, 3>>& anchors, bool refine, int numberBase, bool mergeRegular) {
+                            const std::map<int, std::array<double, 3>>& anchors, bool refine, int numberBase, bool mergeRegular,
+                            const std::optional<Eigen::MatrixX3d>& target, int fitRounds) {
     return guarded([&] {
       if (quads.cols() != 4) throw Error("quads must have 4 columns (one row per quad), got " + std::to_string(quads.cols()));
       QuadCage cage;
@@ -426,28 +425,22 @@ PYBIND11_MODULE(HoleFillApp, m) {
       for (const auto& [a, b, d] : knots) cage.setKnot(a, b, d);
       for (const auto& [a, b] : sharpEdges) cage.setSharp(a, b);
       for (const auto& [v, p] : anchors) cage.anchors[v] = Eigen::Vector3d(p[0], p[1], p[2]);
-      G2GnurbsOptions o;
-      o.refineWhenNeeded = refine;
-      G2GnurbsResult r;
-      GnurbsBrep b;
-      GnurbsContinuity c;
-      double seconds = 0;
+      GnurbsBuildOptions o;
+      o.surface.refineWhenNeeded = refine;
+      o.brep.mergeRegular = mergeRegular;
+      o.fit.iterations = fitRounds;
+      GnurbsBuildResult r;
       {
         py::gil_scoped_release release;
-        const auto t0 = std::chrono::steady_clock::now();
-        r = buildG2Gnurbs(cage, o);
-        GnurbsBrepOptions bo;
-        bo.mergeRegular = mergeRegular;
-        b = gnurbsToBrep(r, bo);
-        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        c = measureGnurbsContinuity(r);
+        r = buildGnurbs(cage, o, target ? &*target : nullptr);
       }
-      return py::make_tuple(py::bytes(shapeToBrepString(b.shape)), b.sidecarJson, gnurbsReportJson(r, c, &b, seconds));
+      return py::make_tuple(py::bytes(shapeToBrepString(r.brep.shape)), r.brep.sidecarJson, r.toJson(), r.cage.vertices);
     });
   }, py::arg("vertices"), py::arg("quads"), py::arg("knots") = std::vector<std::tuple<int, int, double>>{},
      py::arg("sharpEdges") = std::vector<std::pair<int, int>>{}, py::arg("anchors") = std::map<int, std::array<double, 3>>{},
-     py::arg("refine") = true, py::arg("numberBase") = 0, py::arg("mergeRegular") = false,
-     "G² G-NURBS surface over a quad cage (0-based indices): (BREP text of the shell, faces sidecar JSON, report JSON).");
+     py::arg("refine") = true, py::arg("numberBase") = 0, py::arg("mergeRegular") = false, py::arg("target") = std::nullopt,
+     py::arg("fitRounds") = GnurbsFitOptions{}.iterations,
+     "G² G-NURBS surface over a quad cage (0-based indices), fitted to `target` points first when given (in fitRounds rounds): (BREP text of the shell, faces sidecar JSON, report JSON, the cage's vertices as built: fitted, or as given).");
   m.def("readCage", [](const std::string& path) {
     return guarded([&] {
       const QuadCage c = readCage(path);
@@ -524,40 +517,32 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("method") = "shape", py::arg("radius") = 0.0,
      py::arg("weights") = "", "Meshless or learned (bidgcn) parameterization of a point cloud with fixed boundary parameters: (uv per point, report JSON).");
-  m.def("fitPointCloud", [](const Eigen::MatrixX3d& points, std::vector<bool> boundary, Eigen::MatrixX2d boundaryUV, bool uvGiven,
+  m.def("fitPointCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV, bool uvGiven,
                             const std::vector<int>& corners, const std::string& method, double radius, const std::string& weights, int degree,
                             double tolerance, int cells, int iterations, bool thb) {
     return guarded([&] {
-      CloudParameterizationOptions po;
-      po.weights = cloudWeightsByName(method);
-      po.radius = radius;
-      po.weightsFile = weights;
-      ThbFitOptions fo;
-      fo.degree = degree;
-      fo.tolerance = tolerance;
-      fo.baseCells = cells;
-      fo.maxIterations = iterations;
-      if (!thb) fo.maxLevels = 1;
-      if (degree < 1 || degree > 7) throw Error("the degree must be 1 to 7");
-      if (!(tolerance > 0)) throw Error("the tolerance must be positive");
-      int found = -1;
-      CloudParameterization p;
-      ThbFitResult r;
-      TopoDS_Face face;
+      PointCloudFitOptions o;
+      o.parameterization.weights = cloudWeightsByName(method);
+      o.parameterization.radius = radius;
+      o.parameterization.weightsFile = weights;
+      o.fit.degree = degree;
+      o.fit.tolerance = tolerance;
+      o.fit.baseCells = cells;
+      o.fit.maxIterations = iterations;
+      if (!thb) o.fit.maxLevels = 1;
+      o.corners = corners;
+      FlaggedCloud cloud;
+      cloud.points = points;
+      cloud.boundary = boundary;
+      cloud.uv = boundaryUV;
+      cloud.flagsGiven = !boundary.empty();
+      cloud.boundaryUVGiven = uvGiven;
+      PointCloudFitResult f;
       {
         py::gil_scoped_release release;
-        if (boundary.empty()) {
-          const CloudBoundary b = detectCloudBoundary(points);
-          boundary = b.boundary;
-          found = b.count;
-        }
-        if (!uvGiven) boundaryUV = boundaryChordParameters(points, boundary, corners);
-        p = parameterizeCloud(points, boundary, boundaryUV, po);
-        r = fitThb(points, p.uv, fo);
-        face = BRepBuilderAPI_MakeFace(toOcct(r.surface), 1e-7).Face();
+        f = fitPointCloud(cloud, o);
       }
-      std::string json = "{\"parameterization\":" + p.toJson() + ",\"boundary_found\":" + std::to_string(found) + "," +
-                         r.toJson().substr(1);
+      const ThbFitResult& r = f.fit;
       // The hierarchical mesh as parameter rectangles (level, u0, v0, u1, v1).
       const auto leaves = r.space.leafCells();
       Eigen::MatrixXd rects(leaves.size(), 5);
@@ -566,9 +551,10 @@ PYBIND11_MODULE(HoleFillApp, m) {
         const double du = 1.0 / r.space.cellsU(l), dv = 1.0 / r.space.cellsV(l);
         rects.row(k) << l, i * du, j * dv, (i + 1) * du, (j + 1) * dv;
       }
-      Eigen::Matrix<bool, Eigen::Dynamic, 1> flags(boundary.size());
-      for (size_t k = 0; k < boundary.size(); ++k) flags[k] = boundary[k];
-      return py::make_tuple(py::bytes(shapeToBrepString(face)), json, r.uv, Eigen::VectorXd(r.errors * r.diagonal), rects, flags);
+      const std::vector<bool>& used = f.cloud.boundary;
+      Eigen::Matrix<bool, Eigen::Dynamic, 1> flags(used.size());
+      for (size_t k = 0; k < used.size(); ++k) flags[k] = used[k];
+      return py::make_tuple(py::bytes(shapeToBrepString(f.shape)), f.toJson(), r.uv, Eigen::VectorXd(r.errors * r.diagonal), rects, flags);
     });
   }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("uvGiven"), py::arg("corners"), py::arg("method") = "shape",
      py::arg("radius") = 0.0, py::arg("weights") = "", py::arg("degree") = 3, py::arg("tolerance") = 1e-3, py::arg("cells") = 4,

@@ -42,6 +42,31 @@ def test_surface_from_arrays_is_g2_valid_and_in_control_face_order():
     assert (corner - FreeCAD.Vector(0, 0, 1.5)).Length < 1e-9, corner
 
 
+def test_a_cage_fitted_to_target_points_moves_to_them():
+    # The macro door fits as the CLI's --fit does (one core pipeline): points sampled from the
+    # surface of a cage, and that cage with its vertices lifted, fitted back to them.
+    import random
+    cage = HoleFill.sampleCage("cage_valence5")
+    truth, _ = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"])
+    rnd = random.Random(4)
+    target = []
+    for f in truth.Faces:
+        u0, u1, v0, v1 = f.ParameterRange
+        for _ in range(6):
+            target.append(tuple(f.valueAt(u0 + rnd.random() * (u1 - u0), v0 + rnd.random() * (v1 - v0))))
+    lifted = [(x, y, z + 0.05 * rnd.uniform(-1, 1)) for x, y, z in cage["vertices"]]
+    shell, rep = HoleFill.gnurbsSurface(lifted, cage["quads"], target=target, fitRounds=4)
+    assert shell.isValid(), rep["brep"]
+    fit = rep["fit"]
+    assert fit["points"] == len(target) and fit["d_max_percent"] < 0.1, fit
+    moved = rep["cage_vertices_fitted"]
+    assert len(moved) == len(lifted)
+    assert max(abs(m[2] - l[2]) for m, l in zip(moved, lifted)) > 1e-3, "the cage did not move"
+    plain, prep = HoleFill.gnurbsSurface(cage["vertices"], cage["quads"])
+    assert "fit" not in prep and "cage_vertices_fitted" not in prep
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], target=[]), "no points")
+
+
 def test_cage_from_a_part_shell_gives_the_same_surface():
     cage = HoleFill.sampleCage("cage_valence3")
     shell = cage_shell(cage)

@@ -28,14 +28,18 @@ def _shape(brep):
     return s
 
 
-def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refine=True, mergeRegular=False):
+def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refine=True, mergeRegular=False, target=None,
+                  fitRounds=None):
     """The G² surface over the cage: (Part.Shape shell, report dict). The report holds the
     construction's diagnostics (extraordinary_points, refinements and why, constraint_residual,
     warnings), the continuity reached (g1/g2 on spoke edges and elsewhere), the B-rep checks, and
     "faces": for Face1, Face2, ... the control face and sub-patch (-1: the face's bicubic patch).
     refine=False refuses cages that need a Catmull-Clark step instead of refining them.
     mergeRegular=True merges rectangles of regular faces into one C² B-spline face each (the
-    report's "faces" then lists a merged face's "control_faces")."""
+    report's "faces" then lists a merged face's "control_faces").
+    target: points (N×3, or a Points/Mesh object's points) to fit the cage to first, in fitRounds
+    rounds (None: the core's); the report then holds "fit" (d_max_percent, d_avg_percent of the
+    target's diagonal, ...) and "cage_vertices_fitted", the moved cage vertices."""
     import numpy as np
     v = np.asarray(vertices, dtype=float).reshape(-1, 3)
     q = np.asarray(quads, dtype=np.int32)
@@ -44,8 +48,16 @@ def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refi
     k = [(int(a), int(b), float(d)) for a, b, d in (knots or [])]
     s = [(int(a), int(b)) for a, b in sharpEdges]
     anc = {int(i): tuple(float(c) for c in p) for i, p in (anchors or {}).items()}
-    brep, sidecar, report = HoleFillApp.gnurbsSurface(v, q, k, s, anc, bool(refine), 0, bool(mergeRegular))
+    extra = {}
+    if target is not None:
+        from HoleFill.pointcloud import _points
+        extra["target"] = _points(target)
+        if fitRounds is not None:
+            extra["fitRounds"] = int(fitRounds)
+    brep, sidecar, report, fitted = HoleFillApp.gnurbsSurface(v, q, k, s, anc, bool(refine), 0, bool(mergeRegular), **extra)
     rep = json.loads(report)
+    if target is not None:
+        rep["cage_vertices_fitted"] = fitted
     rep["faces"] = json.loads(sidecar)["faces"]
     return _shape(brep), rep
 
