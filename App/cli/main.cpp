@@ -473,15 +473,8 @@ int cmdFit(const Args& a) {
     o.fit.controlV = static_cast<int>(number(c.substr(x + 1), "--ctrl"));
     o.maxControl = 0;  // exactly these, unless --max-ctrl asks to refine from them
   }
-  if (a.has("--max-ctrl")) {
-    o.maxControl = static_cast<int>(number(a.get("--max-ctrl"), "--max-ctrl"));
-    if (o.maxControl != 0 && o.maxControl < std::max(o.fit.controlU, o.fit.controlV))
-      throw Error("--max-ctrl must be 0 (exactly --ctrl) or at least the larger --ctrl count");
-  }
-  if (a.has("--tolerance")) {
-    o.tolerance = number(a.get("--tolerance"), "--tolerance");
-    if (!(o.tolerance > 0)) throw Error("--tolerance must be positive");
-  }
+  if (a.has("--max-ctrl")) o.maxControl = static_cast<int>(number(a.get("--max-ctrl"), "--max-ctrl"));
+  if (a.has("--tolerance")) o.tolerance = number(a.get("--tolerance"), "--tolerance");
   if (a.has("--release-depth")) o.parameterization.releaseDepth = number(a.get("--release-depth"), "--release-depth");
   o.relaxLabels = !a.has("--hold-labels");
   setExtensionByName(o, a.get("--extension", "fit"));
@@ -490,10 +483,8 @@ int cmdFit(const Args& a) {
   const std::string iso = a.get("--isocurves", "grid");
   if (iso == "paper") o.extension.paperIsocurves = true;
   else if (iso != "grid") throw Error("--isocurves must be grid or paper, got '" + iso + "'");
-  const auto weight = [&](const char* flag, double& into) {
-    if (!a.has(flag)) return;
-    into = number(a.get(flag), flag);
-    if (!(into >= 0)) throw Error(std::string(flag) + " must be zero or positive");
+  const auto weight = [&](const char* flag, double& into) {  // number() refuses negatives
+    if (a.has(flag)) into = number(a.get(flag), flag);
   };
   weight("--fairness", o.extension.fairness);
   weight("--smoothing", o.fit.smoothing);

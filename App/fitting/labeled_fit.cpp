@@ -235,13 +235,24 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
 
 }  // namespace
 
-LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+void checkLabeledFitOptions(const LabeledFitOptions& o) {
+  if (!(o.tolerance > 0)) throw Error("the tolerance must be positive");
+  if (o.fit.controlU < 4 || o.fit.controlV < 4) throw Error("a cubic fit needs at least 4 control points a direction");
+  if (o.maxControl != 0 && o.maxControl < std::max(o.fit.controlU, o.fit.controlV))
+    throw Error("maxControl (the most control points a direction) must be 0 (exactly the start's) or at least the larger of controlU and controlV");
+  if (!(o.fit.smoothing >= 0 && o.extension.fairness >= 0 && o.parameterization.framePlacement >= 0 && o.extension.meshFairness >= 0 &&
+        o.extensionSmoothing >= 0))
+    throw Error("the weights (smoothing, fairness, frame placement, mesh fairness) must be zero or positive");
   if (!(o.reach >= 0 && o.reach <= 10)) throw Error("the reach past the domain must be between 0 and 10 times its larger side");
   if (o.extend && o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit &&
       (o.extension.meshFairness > 0 || o.extension.paperIsocurves))
     throw Error("mesh fairness and the paper's isocurves shape the continuation extension (G2 or G1), not the fitted one: "
                 "ask for extension G2 or G1 with them");
+}
+
+LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  checkLabeledFitOptions(o);
   const LabeledParameterization labeled = parameterizeLabeled(region, segments, o.parameterization);
   LabeledFitResult r;
   try {

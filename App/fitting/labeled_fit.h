@@ -96,7 +96,14 @@ struct LabeledFitResult {
   std::string toJson() const;
 };
 
+// Throws Error for options out of range (checkLabeledFitOptions) and as the stages do.
 LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& options = {});
+
+// The options' ranges, checked once for every door: a positive tolerance, at least 4 control points a
+// direction, maxControl 0 or at least the larger start count, weights zero or positive, the reach
+// within 0 to 10, and no continuation shaping (mesh fairness, the paper's isocurves) asked of the
+// sampled extension. Throws Error naming the option.
+void checkLabeledFitOptions(const LabeledFitOptions& options);
 
 // The extension by the name the doors take: "fit" (SmoothFit, the default), "G2" or "G1" (the
 // paper's continuation at that order), "none" (the region alone); Error for another name.

@@ -463,14 +463,10 @@ PYBIND11_MODULE(HoleFillApp, m) {
       o.fit.controlV = controlV;
       o.fit.smoothing = smoothing;
       setExtensionByName(o, extension);
-      if (!(fairness >= 0 && smoothing >= 0 && framePlacement >= 0 && meshFairness >= 0)) throw Error("the weights must be zero or positive");
       o.extension.marginLayers = margin;
       o.extension.fairness = fairness;
       o.parameterization.framePlacement = framePlacement;
       o.extension.meshFairness = meshFairness;
-      if (maxControl != 0 && maxControl < std::max(controlU, controlV))
-        throw Error("maxControl must be 0 (exactly controlU x controlV) or at least the larger of controlU and controlV");
-      if (!(tolerance > 0)) throw Error("the tolerance must be positive");
       o.maxControl = maxControl;
       o.tolerance = tolerance;
       o.parameterization.releaseDepth = releaseDepth;

@@ -71,8 +71,8 @@ PY
 expect_error "an unknown --isocurves" "--isocurves" "$T/region.obj" --labels "$T/labels.json" --isocurves wiggly
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --extension G2 --isocurves paper --out "$T/fit_paper_iso.brep" >/dev/null 2>"$T/err" && [ -s "$T/fit_paper_iso.brep" ]; then
   ok "fit with the paper's isocurve fairness"; else bad "fit --isocurves paper: $(cat "$T/err")"; fi
-expect_error "--max-ctrl below --ctrl" "--max-ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
-expect_error "zero --tolerance" "--tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
+expect_error "--max-ctrl below --ctrl" "at least the larger of controlU" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
+expect_error "zero --tolerance" "tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
 expect_error "negative --reach" "--reach must be a non-negative number" "$T/region.obj" --labels "$T/labels.json" --reach -0.1
 # (--reach 0: the domain is the rectangle, 6 x 3 units; the default reach widens it by 0.05 of 6 a side.)
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --tolerance 1e-4 --reach 0 --out "$T/fit_refined.brep" --json \

@@ -41,6 +41,48 @@ TEST(LabeledFit, ParsesLabelsAndRunsEndToEndOnAFlatRectangle) {
 // Issue 21, never a crash: random small regions (unions of random disks over a grid, lifted onto a
 // random quadric, in either orientation) with their boundary split into four labeled runs at random
 // corners. Each must give a face or a holefill::Error, never a crash and never another exception.
+// One check of the options for every door: each range is refused with the option named, before
+// any stage runs (the region here is never looked at).
+TEST(LabeledFit, OptionsOutOfRangeAreRefusedByName) {
+  const auto refused = [](const LabeledFitOptions& o, const char* word) {
+    try {
+      checkLabeledFitOptions(o);
+      ADD_FAILURE() << "accepted; expected a refusal naming " << word;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+    }
+  };
+  EXPECT_NO_THROW(checkLabeledFitOptions({}));
+  LabeledFitOptions o;
+  o.tolerance = 0;
+  refused(o, "tolerance");
+  o = {};
+  o.fit.controlU = 3;
+  refused(o, "at least 4 control points");
+  o = {};
+  o.fit.controlU = 30;
+  o.maxControl = 20;
+  refused(o, "maxControl");
+  o.maxControl = 0;  // exactly the start's
+  EXPECT_NO_THROW(checkLabeledFitOptions(o));
+  o = {};
+  o.fit.smoothing = -1e-6;
+  refused(o, "weights");
+  o = {};
+  o.extension.fairness = -1;
+  refused(o, "weights");
+  o = {};
+  o.reach = 11;
+  refused(o, "reach");
+  o = {};
+  o.extension.meshFairness = 1e-2;  // with the sampled extension, the default
+  refused(o, "ask for extension G2 or G1");
+  setExtensionByName(o, "G2");
+  EXPECT_NO_THROW(checkLabeledFitOptions(o));
+  const TriangleMesh nothing;
+  EXPECT_THROW(fitLabeled(nothing, {}, [] { LabeledFitOptions b; b.tolerance = -1; return b; }()), Error);
+}
+
 TEST(LabeledFit, RandomRegionsAndLabelSplitsGiveAFaceOrAClearError) {
   std::mt19937 rng(20261203);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
