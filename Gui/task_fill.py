@@ -58,16 +58,16 @@ class FillTaskPanel:
         lay.addRow(self.useSel)
         self.method = QtWidgets.QComboBox()
         self.method.addItems(list(HoleFill.METHODS))
-        self.method.setToolTip(translate("HoleFill", "auto: np or mvc, whichever distorts the boundary less;\n"
-                               "np: nearest plane projection; mvc: regular N-gon with mean value mapping;\n"
-                               "uvtran: learned projection surface (falls back to mvc, and says so, if it cannot)"))
+        tips = {name: HoleFill.optionTip(f) for name, f in HoleFill.FILL_OPTIONS.items()}
+        self.method.setToolTip(tips["method"])
         lay.addRow(translate("HoleFill", "Parameterization:"), self.method)
         self.showProjection = QtWidgets.QCheckBox(translate("HoleFill", "Show UVTran projection surface"))
         self.showProjection.setToolTip(translate("HoleFill", "Overlay the surface UVTran predicts for this hole (view only)"))
         lay.addRow(self.showProjection)
         self.continuity = QtWidgets.QComboBox()
         self.continuity.addItems(list(HoleFill.CONTINUITIES))
-        self.continuity.setCurrentText("G1")
+        self.continuity.setCurrentText(HoleFill.FILL_OPTIONS["continuity"]["default"])
+        self.continuity.setToolTip(tips["continuity"])
         lay.addRow(translate("HoleFill", "Continuity:"), self.continuity)
         # One row per loop edge: what to ask of it (auto = the continuity above, G0 on creases found
         # at the hole's corners) and, after a preview, what was asked and reached there.
@@ -81,6 +81,7 @@ class FillTaskPanel:
         self.tolerance.setDecimals(7)
         self.tolerance.setRange(0.0, 1e3)
         self.tolerance.setSpecialValueText(translate("HoleFill", "auto (1e-6 of hole size)"))
+        self.tolerance.setToolTip(tips["tolerance"])
         lay.addRow(translate("HoleFill", "G0 tolerance:"), self.tolerance)
         self.output = QtWidgets.QComboBox()
         self.output.addItems(list(fill_feature.OUTPUTS))

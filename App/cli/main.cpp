@@ -39,6 +39,7 @@
 #include "geometry/atomic_file.h"
 #include "geometry/bspline_surface.h"
 #include "geometry/error.h"
+#include "geometry/json_reader.h"
 #include "geometry/json_writer.h"
 #include "geometry/supervised_child.h"
 #include "inspect/inspection_render.h"
@@ -46,6 +47,8 @@
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
 #include "mesh/sample_meshes.h"
+#include "options/hole_fill_schema.h"
+#include "options/option_sets.h"
 
 using namespace holefill;
 
@@ -54,14 +57,12 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  holefill holes FILE [--all] [--json]\n"
-    "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...]\n"
-    "                [--face-out FACE.brep] [--method auto|np|mvc|uvtran|support] [--continuity G0|G1|G2]\n"
-    "                [--tolerance T] [--angular-tolerance RAD] [--weights UVTRAN.pt] [--json]\n"
-    "                [--edge-continuity Edge5=G0,Edge7=G1,...] [--no-crease-detection] [--volume] [--check-model]\n"
-    "                [--no-model-accuracy] (edges of an inexact model are judged to its own accuracy unless given)\n"
-    "                (creases found at the loop's corners are asked G0 unless --no-crease-detection)\n"
+    "  holefill fill FILE --out OUT [--hole K | --hole all | --edges Edge3,Edge7,...] [--face-out FACE.brep] [--json]\n"
+    "                [the fill's options, `holefill options fill`: --method, --continuity, --tolerance,\n"
+    "                --angular-tolerance, --curvature-tolerance, --edge-continuity, --no-crease-detection, ...]\n"
     "                [--divide CURVE.brep]  two adjacent holes: the loop split by the one edge in CURVE.brep\n"
     "                (running from one loop vertex to another), filled as two faces sharing it\n"
+    "  holefill options [SET] [--json]   an option set's options (fill): flag, default, unit, what it does\n"
     "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
     "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
     "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
@@ -120,7 +121,13 @@ struct Args {
 };
 
 Args parse(int argc, char** argv) {
-  static const std::vector<std::string> flags = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--no-crease-detection", "--volume", "--check-model", "--no-model-accuracy", "--hold-labels"};  // --no-refine: mesh-fill and gnurbs
+  // Valueless flags: the verbs' own, and every Bool option's (its flag sets it).
+  static const std::vector<std::string> flags = [] {
+    std::vector<std::string> f = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--hold-labels"};  // --no-refine: mesh-fill and gnurbs
+    for (const auto& b : holeFillSchema())
+      if (b.field.kind == OptionKind::Bool) f.push_back(b.field.flag);
+    return f;
+  }();
   Args a;
   if (argc < 2) throw Error(std::string("no command given\n") + kUsage);
   a.verb = argv[1];
@@ -141,6 +148,20 @@ Args parse(int argc, char** argv) {
     }
   }
   return a;
+}
+
+// Sets every option of `schema` whose flag is given (a Bool's bare flag sets what the schema says).
+template <class O>
+void applyFlags(const OptionSchema<O>& schema, const Args& a, O& o) {
+  for (const auto& b : schema) {
+    const OptionField& f = b.field;
+    if (f.flag.empty() || !a.has(f.flag)) continue;
+    try {
+      b.set(o, f.kind == OptionKind::Bool ? (f.flagSets ? "true" : "false") : a.get(f.flag));
+    } catch (const Error& e) {
+      throw Error(f.flag + ": " + e.what());
+    }
+  }
 }
 
 double number(const std::string& s, const std::string& what) {
@@ -244,16 +265,7 @@ int cmdFill(const Args& a) {
   if (a.input.empty()) throw Error("fill: no input file");
   if (!a.has("--out")) throw Error("fill: --out OUT is required");
   HoleFillOptions o;
-  o.method = paramMethodFromString(a.get("--method", "auto"));
-  o.parameterization.uvtranWeights = a.get("--weights", "");
-  o.continuity = continuityFromString(a.get("--continuity", "G1"));
-  if (a.has("--tolerance")) o.tolerance = number(a.get("--tolerance"), "--tolerance");
-  if (a.has("--angular-tolerance")) o.angularTolerance = number(a.get("--angular-tolerance"), "--angular-tolerance");
-  if (a.has("--edge-continuity")) o.edgeContinuity = parseEdgeContinuity(a.get("--edge-continuity"));
-  o.edges.detectCreases = !a.has("--no-crease-detection");
-  o.computeVolume = a.has("--volume");
-  o.checkModel = a.has("--check-model");
-  o.modelAccuracy = !a.has("--no-model-accuracy");
+  applyFlags(holeFillSchema(), a, o);
   TopoDS_Shape shape = readShape(a.input);
   if (a.has("--divide")) return fillAdjacent(a, shape, o);
   o.copyModel = false;  // the model was read for this fill alone
@@ -623,6 +635,36 @@ int cmdSamples(const Args& a) {
 }
 
 
+// The option sets' schemas (options/option_sets.h): every flag with its default, unit and doc.
+int cmdOptions(const Args& a) {
+  const std::vector<std::string> sets = a.input.empty() ? optionSetNames() : std::vector<std::string>{a.input};
+  if (a.has("--json")) {
+    if (!a.input.empty()) {
+      std::cout << optionSetJson(a.input) << "\n";
+      return 0;
+    }
+    std::cout << "{";
+    for (size_t k = 0; k < sets.size(); ++k) std::cout << (k ? "," : "") << "\"" << sets[k] << "\":" << optionSetJson(sets[k]);
+    std::cout << "}\n";
+    return 0;
+  }
+  for (const auto& set : sets) {
+    std::printf("%s:\n", set.c_str());
+    for (const JsonValue& f : parseJson(optionSetJson(set)).array) {
+      const auto text = [&](const char* k) { return f.find(k)->string; };
+      const JsonValue& d = *f.find("default");
+      std::string value = d.type == JsonValue::Type::Number   ? formatOptionNumber(d.number)
+                          : d.type == JsonValue::Type::Bool ? (d.boolean ? "true" : "false")
+                                                            : "'" + d.string + "'";
+      std::string flag = text("flag").empty() ? "(no flag)" : text("flag");
+      if (text("kind") == "bool") value += std::string("; the flag sets ") + (f.find("flag_sets")->boolean ? "true" : "false");
+      else if (!text("unit").empty()) value += " " + text("unit");
+      std::printf("  %-24s %-22s default %s\n      %s\n", text("name").c_str(), flag.c_str(), value.c_str(), text("doc").c_str());
+    }
+  }
+  return 0;
+}
+
 int runVerb(int argc, char** argv) {
   try {
     const Args a = parse(argc, argv);
@@ -636,6 +678,7 @@ int runVerb(int argc, char** argv) {
     if (a.verb == "fit") return cmdFit(a);
     if (a.verb == "param") return cmdParam(a);
     if (a.verb == "fit-points") return cmdFitPoints(a);
+    if (a.verb == "options") return cmdOptions(a);
     throw Error("unknown command '" + a.verb + "'\n" + kUsage);
   } catch (const Error& e) {
     std::fprintf(stderr, "holefill: %s\n", e.what());

@@ -39,6 +39,8 @@
 #include "mesh/fill_metrics.h"
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
+#include "options/hole_fill_schema.h"
+#include "options/option_sets.h"
 
 namespace py = pybind11;
 using namespace holefill;
@@ -54,20 +56,22 @@ auto guarded(F&& f) -> decltype(f()) {
   }
 }
 
-HoleFillOptions fillOptions(const std::string& method, const std::string& continuity, double tolerance,
-                            double angularTolerance, double curvatureTolerance, int maxControlPoints,
-                            const std::function<bool(double)>& progress, const std::string& edgeContinuity,
-                            bool detectCreases) {
-  HoleFillOptions o;
-  o.method = paramMethodFromString(method);
-  o.continuity = continuityFromString(continuity);
-  o.tolerance = tolerance;
-  o.angularTolerance = angularTolerance;
-  o.curvatureTolerance = curvatureTolerance;
-  if (maxControlPoints > 0) o.solver.maxControlPoints = maxControlPoints;
-  o.progress = progress;
-  if (!edgeContinuity.empty()) o.edgeContinuity = parseEdgeContinuity(edgeContinuity);
-  o.edges.detectCreases = detectCreases;
+// An option set from a Python dict {name: value} (options/option_schema.h): values cross as text,
+// checked by the schema; bools as true/false, numbers in round-trip precision.
+template <class O>
+O optionsFromDict(const OptionSchema<O>& schema, const py::dict& d) {
+  O o;
+  for (const auto& item : d) {
+    const py::handle v = item.second;
+    const std::string name = py::str(item.first);
+    std::string text;
+    if (py::isinstance<py::bool_>(v)) text = py::cast<bool>(v) ? "true" : "false";
+    else if (py::isinstance<py::int_>(v)) text = std::to_string(py::cast<long long>(v));
+    else if (py::isinstance<py::float_>(v)) text = formatOptionNumber(py::cast<double>(v));
+    else if (py::isinstance<py::str>(v)) text = py::cast<std::string>(v);
+    else throw Error(name + " must be a number, a bool or a string, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+    setOption(schema, o, name, text);
+  }
   return o;
 }
 
@@ -79,16 +83,11 @@ py::tuple fillTuple(const HoleFillResult& r) {
 }
 
 // One fill of a prepared hole (HoleFill.fillHole is PreparedHole(...).fill(...)).
-py::tuple fillPrepared(PreparedHole& hole, const std::string& method, const std::string& continuity, double tolerance,
-                       double angularTolerance, double curvatureTolerance, int maxControlPoints,
-                       const std::function<bool(double)>& progress, bool sew, const std::string& edgeContinuity,
-                       bool detectCreases, bool modelAccuracy, const std::string& weights) {
+py::tuple fillPrepared(PreparedHole& hole, const py::dict& options, const std::function<bool(double)>& progress, bool sew) {
   return guarded([&] {
-    HoleFillOptions o = fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
-                                    maxControlPoints, progress, edgeContinuity, detectCreases);
+    HoleFillOptions o = optionsFromDict(holeFillSchema(), options);
+    o.progress = progress;
     o.sew = sew;
-    o.modelAccuracy = modelAccuracy;
-    o.parameterization.uvtranWeights = weights;
     return fillTuple(hole.fill(o));
   });
 }
@@ -98,9 +97,7 @@ std::unique_ptr<PreparedHole> prepare(const std::string& brep, const std::vector
 }
 
 // (BREP of the two faces as a compound, BREP of the model with both, report JSON).
-py::tuple fillAdjacent(const std::string& brep, const std::vector<int>& edges, const std::string& dividerBrep,
-                       const std::string& method, const std::string& continuity, double tolerance,
-                       double angularTolerance, double curvatureTolerance, int maxControlPoints,
+py::tuple fillAdjacent(const std::string& brep, const std::vector<int>& edges, const std::string& dividerBrep, const py::dict& options,
                        const std::function<bool(double)>& progress) {
   return guarded([&] {
     const TopoDS_Shape model = shapeFromBrepString(brep), divider = shapeFromBrepString(dividerBrep);
@@ -108,10 +105,9 @@ py::tuple fillAdjacent(const std::string& brep, const std::vector<int>& edges, c
     TopExp::MapShapes(divider, TopAbs_EDGE, curveEdges);
     if (curveEdges.Extent() != 1)
       throw Error("the dividing curve must be one edge; the shape given has " + std::to_string(curveEdges.Extent()));
-    const AdjacentFillResult r =
-        fillAdjacentHoles(model, edges, TopoDS::Edge(curveEdges(1)),
-                          fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance,
-                                      maxControlPoints, progress, "", true));
+    HoleFillOptions o = optionsFromDict(holeFillSchema(), options);
+    o.progress = progress;
+    const AdjacentFillResult r = fillAdjacentHoles(model, edges, TopoDS::Edge(curveEdges(1)), o);
     std::string faces;
     if (!r.first.face.IsNull() && !r.second.face.IsNull()) {
       BRep_Builder B;
@@ -197,16 +193,13 @@ PYBIND11_MODULE(HoleFillApp, m) {
                            "parameterizations are kept between fills (a Preview that changes only the method, "
                            "continuity, tolerances or edge requests pays for the solve alone).")
       .def(py::init(&prepare), py::arg("brep"), py::arg("edges"))
-      .def("fill", &fillPrepared, py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,
-           py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,
-           py::arg("progress") = std::function<bool(double)>(), py::arg("sew") = true, py::arg("edgeContinuity") = "",
-           py::arg("detectCreases") = true, py::arg("modelAccuracy") = true, py::arg("weights") = "",
-           "Fill it: (face BREP, sewn model BREP, report JSON). weights: UVTran's .pt file, empty for the shipped one.")
+      .def("fill", &fillPrepared, py::arg("options") = py::dict(), py::arg("progress") = std::function<bool(double)>(),
+           py::arg("sew") = true,
+           "Fill it: (face BREP, sewn model BREP or empty without sew, report JSON). options: {name: value} of the "
+           "fill's option set (optionSchema('fill')); those left out keep their defaults.")
       .def("computed", [](const PreparedHole& h) { return py::make_tuple(h.cache().samplings, h.cache().parameterizations); },
            "(boundary samplings, parameterizations) computed so far; the rest came from the kept ones.");
-  m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"),
-        py::arg("method") = "auto", py::arg("continuity") = "G1", py::arg("tolerance") = 0.0,
-        py::arg("angularTolerance") = 1e-3, py::arg("curvatureTolerance") = 0.1, py::arg("maxControlPoints") = 0,
+  m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"), py::arg("options") = py::dict(),
         py::arg("progress") = std::function<bool(double)>(),
         "Split the hole holding the given edges by the one edge in `divider` (BREP) and fill both sides as two "
         "faces sharing it: (BREP of the two faces, BREP of the model, report JSON).");
@@ -219,6 +212,10 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("brep"), py::arg("edges"), py::arg("weights") = "",
      "BREP of UVTran's projection surface (a face on its whole domain) for the hole holding the given edges.");
+  m.def("optionSetNames", &optionSetNames, "The option sets optionSchema describes.");
+  m.def("optionSchema", [](const std::string& set) { return optionSetJson(set); }, py::arg("set"),
+        "An option set's fields as JSON: [{name, flag, kind, unit, doc, choices, minimum, maximum, minimum_excluded, flag_sets, "
+        "default}, ...], the defaults the core's own.");
   m.def("learnInfo", [] {
     try {
       return std::string(learn::learnLibrary().info()) + " from " + learn::learnLibrary().path;

@@ -26,10 +26,43 @@ build_check.check()  # before the core is loaded: never two OCCTs in one process
 import HoleFillApp  # noqa: E402
 
 HoleFillError = HoleFillApp.HoleFillError
-METHODS = ("auto", "np", "mvc", "uvtran")
-CONTINUITIES = ("G0", "G1", "G2")
 
-__all__ = ["findHoles", "fillHole", "prepareHole", "PreparedHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+
+def optionSchema(set):
+    """An option set's fields as the core declares them (HoleFillApp.optionSetNames(): "fill", ...):
+    {name: {"flag", "kind", "unit", "doc", "choices", "minimum", "maximum", "default", ...}}, in the
+    order the core lists them. Every door's defaults and tooltips are read from here."""
+    return {f["name"]: f for f in json.loads(HoleFillApp.optionSchema(set))}
+
+
+def optionTip(field):
+    """A field's tooltip: its doc, and its unit where it has one."""
+    return field["doc"] + (" (%s)" % field["unit"] if field["unit"] else "")
+
+
+FILL_OPTIONS = optionSchema("fill")
+_FILL = {name: f["default"] for name, f in FILL_OPTIONS.items()}
+METHODS = tuple(FILL_OPTIONS["method"]["choices"])
+CONTINUITIES = tuple(FILL_OPTIONS["continuity"]["choices"])
+
+
+def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
+                 edgeContinuity=None, detectCreases=None, modelAccuracy=None, weights=None):
+    """fillHole's keywords as the core's option dict (checked there, by the schema)."""
+    o = dict(method=str(method), continuity=str(continuity), tolerance=float(tolerance),
+             angularTolerance=float(angularTolerance), curvatureTolerance=float(curvatureTolerance),
+             maxControlPoints=int(maxControlPoints))
+    if edgeContinuity:
+        o["edgeContinuity"] = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
+                                       for e, c in dict(edgeContinuity).items())
+    for name, value in (("detectCreases", detectCreases), ("modelAccuracy", modelAccuracy)):
+        if value is not None:
+            o[name] = bool(value)
+    if weights is not None:
+        o["weights"] = str(weights)
+    return o
+
+__all__ = ["optionSchema", "optionTip", "FILL_OPTIONS", "findHoles", "fillHole", "prepareHole", "PreparedHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
            "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
            "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints", "fitLabeled"]
@@ -124,19 +157,14 @@ class PreparedHole:
         """(boundary samplings, parameterizations) computed so far; the rest were reused."""
         return self._prepared.computed()
 
-    def fill(self, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3, curvatureTolerance=0.1,
-             maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None, detectCreases=True,
-             modelAccuracy=True, weights=""):
+    def fill(self, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
+             angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
+             maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=False, edgeContinuity=None,
+             detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
         """As fillHole, on this hole."""
-        if method not in METHODS + ("support",):
-            raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
-        if continuity not in CONTINUITIES:
-            raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
-        spec = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
-                        for e, c in (edgeContinuity or {}).items())
-        face, model, rep = self._prepared.fill(method, continuity, float(tolerance), float(angularTolerance),
-                                               float(curvatureTolerance), int(maxControlPoints), progress,
-                                               bool(sewn), spec, bool(detectCreases), bool(modelAccuracy), str(weights))
+        options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
+                               edgeContinuity, detectCreases, modelAccuracy, weights)
+        face, model, rep = self._prepared.fill(options, progress, bool(sewn))
         report = json.loads(rep)
         if report["status"] in ("failed", "cancelled"):
             where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
@@ -154,9 +182,10 @@ def prepareHole(shape, hole=1):
     return PreparedHole(shape, hole)
 
 
-def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             curvatureTolerance=0.1, maxControlPoints=0, progress=None, sewn=False, edgeContinuity=None,
-             detectCreases=True, modelAccuracy=True, weights=""):
+def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
+             angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
+             maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=False, edgeContinuity=None,
+             detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
@@ -174,6 +203,8 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
     neighbour meeting its curve at an angle, report["per_edge"][k]["g1_floor"]) is judged no
     stricter than the model is there, and the message names such edges; False: the tiers alone.
     weights: UVTran's weights file (.pt, from `holefill train uvtran`); "" for the shipped one.
+    maxControlPoints: the most poles the solver's refinement may reach.
+    The defaults are the core's (optionSchema("fill"), as `holefill options fill` lists them).
     Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
     The report says what was achieved; a fill that misses the request is returned with
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
@@ -182,8 +213,10 @@ def fillHole(shape, hole=1, method="auto", continuity="G1", tolerance=0.0, angul
                                           modelAccuracy, weights)
 
 
-def fillAdjacentHoles(shape, hole, divider, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-                      curvatureTolerance=0.1, maxControlPoints=0, progress=None):
+def fillAdjacentHoles(shape, hole, divider, method=_FILL["method"], continuity=_FILL["continuity"],
+                      tolerance=_FILL["tolerance"], angularTolerance=_FILL["angularTolerance"],
+                      curvatureTolerance=_FILL["curvatureTolerance"], maxControlPoints=_FILL["maxControlPoints"],
+                      progress=None):
     """Two adjacent holes: the loop of `hole` (as in fillHole) split by `divider`, an edge (e.g. a
     sketch's) running across it from one vertex of the loop to another, filled as two faces that
     share that edge: the first side is asked G0 along it, the second side `continuity` there as on
@@ -191,14 +224,9 @@ def fillAdjacentHoles(shape, hole, divider, method="auto", continuity="G1", tole
     Returns ((Part.Face, Part.Face), the model with both faces as a Part.Shape, report); the
     report holds "fills" (the two sides' reports), "across" (the continuity the two faces share
     along "shared_edge") and "status". A failed fill raises HoleFillError."""
-    if method not in METHODS:
-        raise HoleFillError("unknown method '%s': use one of %s" % (method, ", ".join(METHODS)))
-    if continuity not in CONTINUITIES:
-        raise HoleFillError("unknown continuity '%s': use G0, G1 or G2" % continuity)
+    options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints)
     edges = _edgeIndices(shape, hole)
-    faces, model, rep = HoleFillApp.fillAdjacentHoles(_brep(shape), edges, _brep(divider), method, continuity,
-                                                      float(tolerance), float(angularTolerance),
-                                                      float(curvatureTolerance), int(maxControlPoints), progress)
+    faces, model, rep = HoleFillApp.fillAdjacentHoles(_brep(shape), edges, _brep(divider), options, progress)
     report = json.loads(rep)
     if report["status"] in ("failed", "cancelled"):
         raise HoleFillError("adjacent fill %s: %s" % (report["status"], report["message"]))
@@ -229,8 +257,9 @@ def continuityReport(face, shape, hole=None):
     return json.loads(HoleFillApp.continuityReport(_brep(face), _brep(shape), _edgeIndices(shape, hole)))
 
 
-def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             output="Face", doc=None, edgeContinuity=None, weights=""):
+def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
+             angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None,
+             weights=_FILL["weights"]):
     """Create a parametric Fill object on `source` (a document object with a Shape).
     edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.
     edgeContinuity: per-edge requests as in fillHole, kept in the EdgeContinuity property;

@@ -97,27 +97,28 @@ class FillFeature:
         add = partial(ensureProperty, obj)
 
         add("App::PropertyLinkSub", "Source", "Fill", "Object and edges of the hole (one edge names its whole loop)")
-        add("App::PropertyEnumeration", "Method", "Fill", "Parameterization of the trimming curve")
+        tip = {name: HoleFill.optionTip(f) for name, f in HoleFill.FILL_OPTIONS.items()}
+        default = {name: f["default"] for name, f in HoleFill.FILL_OPTIONS.items()}
+        add("App::PropertyEnumeration", "Method", "Fill", tip["method"])
         if list(obj.getEnumerationsOfProperty("Method")) != list(HoleFill.METHODS):
             # New methods appear in documents saved by older versions; the chosen one is kept.
             current = obj.Method if obj.getEnumerationsOfProperty("Method") else "auto"
             obj.Method = list(HoleFill.METHODS)
-            obj.Method = current if current in HoleFill.METHODS else "auto"
-        add("App::PropertyEnumeration", "Continuity", "Fill", "Requested continuity with the surrounding faces")
+            obj.Method = current if current in HoleFill.METHODS else default["method"]
+        add("App::PropertyEnumeration", "Continuity", "Fill", tip["continuity"])
         if not obj.getEnumerationsOfProperty("Continuity"):
             obj.Continuity = list(HoleFill.CONTINUITIES)
-            obj.Continuity = "G1"
-        add("App::PropertyLength", "Tolerance", "Fill", "G0 tolerance (0: 1e-6 of the hole size)", 0.0)
-        add("App::PropertyFloat", "AngularTolerance", "Fill", "G1 tolerance in radians", 1e-3)
+            obj.Continuity = default["continuity"]
+        add("App::PropertyLength", "Tolerance", "Fill", tip["tolerance"], default["tolerance"])
+        add("App::PropertyFloat", "AngularTolerance", "Fill", tip["angularTolerance"], default["angularTolerance"])
         add("App::PropertyVectorList", "HoleSignature", "Fill", "Midpoints of the hole's edges, picked ones first: "
             "where the hole is found again when the source numbers its edges anew")
         obj.setEditorMode("HoleSignature", 2)
-        add("App::PropertyStringList", "EdgeContinuity", "Fill",
-            "Per-edge requests like Edge5=G0 (other edges: Continuity, creases found at the corners G0)")
+        add("App::PropertyStringList", "EdgeContinuity", "Fill", tip["edgeContinuity"])
         add("App::PropertyEnumeration", "Output", "Fill", "Face: the patch alone; Sewn: the source with the patch sewn in")
         if not obj.getEnumerationsOfProperty("Output"):
             obj.Output = list(OUTPUTS)
-        add("App::PropertyFile", "Weights", "Fill", "UVTran's weights file (.pt) for the uvtran method; empty: the shipped one")
+        add("App::PropertyFile", "Weights", "Fill", tip["weights"])
         for name, doc in (("Status", "ok, tolerance_not_met or the failure"), ("Achieved", "continuity reached"),
                           ("Report", "full continuity report (JSON)")):
             add("App::PropertyString", name, "Report", doc)
@@ -183,8 +184,11 @@ class FillFeature:
         return None
 
 
-def makeFill(source, edges=None, method="auto", continuity="G1", tolerance=0.0, angularTolerance=1e-3,
-             output="Face", doc=None, edgeContinuity=None, weights=""):
+_FILL = {name: f["default"] for name, f in HoleFill.FILL_OPTIONS.items()}
+
+
+def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
+             angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None, weights=_FILL["weights"]):
     if source is None or not hasattr(source, "Shape"):
         raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
     doc = doc or source.Document

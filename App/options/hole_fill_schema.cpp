@@ -1,0 +1,94 @@
+#include "options/hole_fill_schema.h"
+
+#include "brep/edge_continuity.h"
+
+namespace holefill {
+
+namespace {
+
+using O = HoleFillOptions;
+
+OptionBinding<O> methodOption() {
+  OptionField f{"method", "--method", OptionKind::Choice, "",
+                "parameterization of the trimming curve: auto (np or mvc, whichever distorts the boundary less), np (nearest plane), "
+                "mvc (regular N-gon, mean value mapping), uvtran (learned projection surface; falls back to mvc, and says so)",
+                {"auto", "np", "mvc", "uvtran"}};
+  return {f, [](const O& o) { return toString(o.method); },
+          [f](O& o, const std::string& t) { o.method = paramMethodFromString(checkOptionChoice(f, t)); }};
+}
+
+OptionBinding<O> continuityOption() {
+  OptionField f{"continuity", "--continuity", OptionKind::Choice, "",
+                "the most continuity any edge is asked for (creases found at the loop's corners are asked G0)", {"G0", "G1", "G2"}};
+  return {f, [](const O& o) { return toString(o.continuity); },
+          [f](O& o, const std::string& t) { o.continuity = continuityFromString(checkOptionChoice(f, t)); }};
+}
+
+OptionBinding<O> edgeContinuityOption() {
+  OptionField f{"edgeContinuity", "--edge-continuity", OptionKind::Text, "",
+                "per-edge requests by the model's 1-based edge names, e.g. Edge5=G0,Edge7=G1 (other edges: continuity)"};
+  return {f,
+          [](const O& o) {
+            std::string s;
+            for (const auto& [edge, c] : o.edgeContinuity) s += (s.empty() ? "" : ",") + ("Edge" + std::to_string(edge)) + "=" + toString(c);
+            return s;
+          },
+          [](O& o, const std::string& t) {
+            if (t.empty()) o.edgeContinuity.clear();
+            else o.edgeContinuity = parseEdgeContinuity(t);
+          }};
+}
+
+OptionField number(const char* name, const char* flag, const char* unit, const char* doc, double minimum, bool excluded) {
+  OptionField f{name, flag, OptionKind::Number, unit, doc};
+  f.minimum = minimum;
+  f.minimumExcluded = excluded;
+  return f;
+}
+
+OptionField boolean(const char* name, const char* flag, bool flagSets, const char* doc) {
+  OptionField f{name, flag, OptionKind::Bool, "", doc};
+  f.flagSets = flagSets;
+  return f;
+}
+
+}  // namespace
+
+const OptionSchema<HoleFillOptions>& holeFillSchema() {
+  static const OptionSchema<O> s = [] {
+    OptionField poles{"maxControlPoints", "--max-control-points", OptionKind::Integer, "poles",
+                      "the most poles the solver's refinement may reach (a cubic patch has 16 at least)"};
+    poles.minimum = 16;
+    return OptionSchema<O>{
+        methodOption(),
+        continuityOption(),
+        numberOption<O>(number("tolerance", "--tolerance", "model units",
+                               "G0 tolerance: the largest gap between the face and the hole's edges (0: 1e-6 of the hole's size)", 0, false),
+                        [](O& o) -> double& { return o.tolerance; }),
+        numberOption<O>(number("angularTolerance", "--angular-tolerance", "radians",
+                               "G1 tolerance: the largest angle between the face's and its neighbours' normals along the edges", 0, true),
+                        [](O& o) -> double& { return o.angularTolerance; }),
+        numberOption<O>(number("curvatureTolerance", "--curvature-tolerance", "relative",
+                               "G2 tolerance: the largest difference of normal curvature across the edges, relative to the larger", 0, true),
+                        [](O& o) -> double& { return o.curvatureTolerance; }),
+        integerOption<O>(poles, [](O& o) -> int& { return o.solver.maxControlPoints; }),
+        edgeContinuityOption(),
+        boolOption<O>(boolean("detectCreases", "--no-crease-detection", false,
+                              "ask G0 of the edges where the loop's corners show the model was sharp"),
+                      [](O& o) -> bool& { return o.edges.detectCreases; }),
+        boolOption<O>(boolean("modelAccuracy", "--no-model-accuracy", false,
+                              "judge each edge no stricter than the model is there (its own tolerance, the angle its neighbour meets it at)"),
+                      [](O& o) -> bool& { return o.modelAccuracy; }),
+        textOption<O>(OptionField{"weights", "--weights", OptionKind::Text, "",
+                                  "UVTran's weights file (.pt, from holefill train uvtran) for the uvtran method; empty: the shipped one"},
+                      [](O& o) -> std::string& { return o.parameterization.uvtranWeights; }),
+        boolOption<O>(boolean("computeVolume", "--volume", true, "also the volume of a closed result (a whole-model integration)"),
+                      [](O& o) -> bool& { return o.computeVolume; }),
+        boolOption<O>(boolean("checkModel", "--check-model", true, "also list every face of the input that BRepCheck finds invalid"),
+                      [](O& o) -> bool& { return o.checkModel; }),
+    };
+  }();
+  return s;
+}
+
+}  // namespace holefill

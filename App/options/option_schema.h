@@ -1,0 +1,108 @@
+// An option set declared once (STYLE.md 11): each field of a core *Options struct with the name
+// the API spells it by (the Python keyword; capitalized, the FreeCAD document property), its CLI
+// flag, kind, unit, range, one-line doc, and the two functions that read and write it in the
+// struct. The default is the struct's own (read from a default-constructed one), so changing a
+// default is a one-line change in the core that every door — the CLI's flags and `holefill
+// options`, the pybind keyword dictionaries, the Python signatures, the document objects'
+// properties and the task panels' tooltips — sees. Values cross the doors as text (numbers in
+// round-trip precision, bools true/false) and are checked here, once, with the field named.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace holefill {
+
+enum class OptionKind { Number, Integer, Bool, Choice, Text };
+
+struct OptionField {
+  std::string name;    // the API's spelling, e.g. "angularTolerance"
+  std::string flag;    // the CLI's, e.g. "--angular-tolerance"; empty where the command line has none
+  OptionKind kind = OptionKind::Number;
+  std::string unit;    // "model units", "radians", "of the diagonal", ... ; empty where there is none
+  std::string doc;     // one line, for tooltips, `holefill options` and docstrings
+  std::vector<std::string> choices;  // Choice: the accepted values, as the API spells them
+  double minimum = -std::numeric_limits<double>::infinity();  // Number, Integer
+  double maximum = std::numeric_limits<double>::infinity();
+  bool minimumExcluded = false;  // a tolerance that 0 would make unreachable: > minimum
+  bool flagSets = true;          // Bool: the value a bare flag sets (--no-crease-detection sets false)
+};
+
+template <class O>
+struct OptionBinding {
+  OptionField field;
+  std::function<std::string(const O&)> get;         // the value as text
+  std::function<void(O&, const std::string&)> set;  // from text; throws Error naming the field
+};
+
+template <class O>
+using OptionSchema = std::vector<OptionBinding<O>>;
+
+// Text of values, and their checks against a field (Error naming the field and what it takes).
+std::string formatOptionNumber(double v);  // round-trip precision
+double parseOptionNumber(const OptionField& f, const std::string& text);
+int parseOptionInteger(const OptionField& f, const std::string& text);
+bool parseOptionBool(const OptionField& f, const std::string& text);
+const std::string& checkOptionChoice(const OptionField& f, const std::string& text);
+
+// The schema as JSON: [{"name", "flag", "kind", "unit", "doc", "choices", "minimum", "maximum",
+// "minimum_excluded", "flag_sets", "default"}, ...], the default typed (number, bool or string).
+std::string optionFieldsJson(const std::vector<OptionField>& fields, const std::vector<std::string>& defaults);
+
+[[noreturn]] void throwUnknownOption(const std::string& name, const std::vector<OptionField>& fields);
+
+template <class O>
+std::vector<OptionField> optionFields(const OptionSchema<O>& s) {
+  std::vector<OptionField> f;
+  for (const auto& b : s) f.push_back(b.field);
+  return f;
+}
+
+template <class O>
+std::string optionSchemaJson(const OptionSchema<O>& s) {
+  const O defaults{};
+  std::vector<std::string> values;
+  for (const auto& b : s) values.push_back(b.get(defaults));
+  return optionFieldsJson(optionFields(s), values);
+}
+
+// Sets the field named `name` (the API's spelling) from text. Throws Error for an unknown name
+// (listing the known ones) or a value the field refuses.
+template <class O>
+void setOption(const OptionSchema<O>& s, O& o, const std::string& name, const std::string& text) {
+  for (const auto& b : s)
+    if (b.field.name == name) return b.set(o, text);
+  throwUnknownOption(name, optionFields(s));
+}
+
+// Bindings of the common kinds to a member reached by `at`.
+template <class O>
+OptionBinding<O> numberOption(OptionField f, std::function<double&(O&)> at) {
+  f.kind = OptionKind::Number;
+  return {f, [at](const O& o) { O c = o; return formatOptionNumber(at(c)); },
+          [f, at](O& o, const std::string& t) { at(o) = parseOptionNumber(f, t); }};
+}
+
+template <class O>
+OptionBinding<O> integerOption(OptionField f, std::function<int&(O&)> at) {
+  f.kind = OptionKind::Integer;
+  return {f, [at](const O& o) { O c = o; return std::to_string(at(c)); },
+          [f, at](O& o, const std::string& t) { at(o) = parseOptionInteger(f, t); }};
+}
+
+template <class O>
+OptionBinding<O> boolOption(OptionField f, std::function<bool&(O&)> at) {
+  f.kind = OptionKind::Bool;
+  return {f, [at](const O& o) { O c = o; return std::string(at(c) ? "true" : "false"); },
+          [f, at](O& o, const std::string& t) { at(o) = parseOptionBool(f, t); }};
+}
+
+template <class O>
+OptionBinding<O> textOption(OptionField f, std::function<std::string&(O&)> at) {
+  f.kind = OptionKind::Text;
+  return {f, [at](const O& o) { O c = o; return at(c); }, [at](O& o, const std::string& t) { at(o) = t; }};
+}
+
+}  // namespace holefill

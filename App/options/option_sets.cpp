@@ -1,0 +1,17 @@
+#include "options/option_sets.h"
+
+#include "geometry/error.h"
+#include "options/hole_fill_schema.h"
+
+namespace holefill {
+
+std::vector<std::string> optionSetNames() { return {"fill"}; }
+
+std::string optionSetJson(const std::string& set) {
+  if (set == "fill") return optionSchemaJson(holeFillSchema());
+  std::string list;
+  for (const auto& n : optionSetNames()) list += (list.empty() ? "" : ", ") + n;
+  throw Error("unknown option set '" + set + "': the sets are " + list);
+}
+
+}  // namespace holefill

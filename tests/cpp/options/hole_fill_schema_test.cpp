@@ -1,0 +1,55 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "geometry/error.h"
+#include "options/hole_fill_schema.h"
+
+using namespace holefill;
+
+// The schema reads and writes the very fields the fill uses: each set through the schema lands
+// in HoleFillOptions where the fill reads it, and reads back the same.
+TEST(HoleFillSchema, EachOptionReachesTheFieldTheFillReads) {
+  const auto& s = holeFillSchema();
+  HoleFillOptions o;
+  const std::vector<std::pair<std::string, std::string>> values = {
+      {"method", "mvc"},        {"continuity", "G2"},        {"tolerance", "0.002"},          {"angularTolerance", "0.01"},
+      {"curvatureTolerance", "0.2"}, {"maxControlPoints", "600"}, {"edgeContinuity", "Edge5=G0,Edge7=G1"},
+      {"detectCreases", "false"}, {"modelAccuracy", "false"}, {"weights", "/tmp/u.pt"}, {"computeVolume", "true"},
+      {"checkModel", "true"}};
+  ASSERT_EQ(values.size(), s.size()) << "a field without a case here";
+  for (const auto& [name, text] : values) setOption(s, o, name, text);
+  EXPECT_EQ(o.method, ParamMethod::MeanValue);
+  EXPECT_EQ(o.continuity, Continuity::G2);
+  EXPECT_EQ(o.tolerance, 0.002);
+  EXPECT_EQ(o.angularTolerance, 0.01);
+  EXPECT_EQ(o.curvatureTolerance, 0.2);
+  EXPECT_EQ(o.solver.maxControlPoints, 600);
+  EXPECT_EQ(o.edgeContinuity, (std::map<int, Continuity>{{5, Continuity::G0}, {7, Continuity::G1}}));
+  EXPECT_FALSE(o.edges.detectCreases);
+  EXPECT_FALSE(o.modelAccuracy);
+  EXPECT_EQ(o.parameterization.uvtranWeights, "/tmp/u.pt");
+  EXPECT_TRUE(o.computeVolume);
+  EXPECT_TRUE(o.checkModel);
+  for (size_t k = 0; k < s.size(); ++k) EXPECT_EQ(s[k].get(o), values[k].second) << s[k].field.name;
+  setOption(s, o, "edgeContinuity", "");
+  EXPECT_TRUE(o.edgeContinuity.empty());
+}
+
+TEST(HoleFillSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
+  const auto& s = holeFillSchema();
+  const HoleFillOptions d;
+  std::set<std::string> names, flags;
+  for (const auto& b : s) {
+    EXPECT_TRUE(names.insert(b.field.name).second) << b.field.name;
+    if (!b.field.flag.empty()) EXPECT_TRUE(flags.insert(b.field.flag).second) << b.field.flag;
+    EXPECT_FALSE(b.field.doc.empty()) << b.field.name;
+    HoleFillOptions copy;
+    EXPECT_NO_THROW(b.set(copy, b.get(d))) << b.field.name;  // the default is a value the field accepts
+  }
+  EXPECT_EQ(s[0].get(d), "auto");
+  EXPECT_EQ(s[1].get(d), "G1");
+  // The hidden test method is not a door's choice.
+  HoleFillOptions o;
+  EXPECT_THROW(setOption(s, o, "method", "support"), Error);
+}

@@ -1,0 +1,87 @@
+"""Headless FreeCAD test that every door offers the fill's options as the core's schema declares
+them (HoleFillApp.optionSchema): the macro API's signatures carry its defaults, the Fill object's
+properties its defaults, choices and tooltips, the preferences start from them, and a value the
+schema refuses is refused by each door with the option named."""
+import inspect
+
+import FreeCAD
+import Part
+
+import fcharness
+import HoleFill
+import HoleFillApp
+from HoleFill import fill_feature, preferences
+
+
+def schema():
+    return HoleFill.optionSchema("fill")
+
+
+def test_the_macro_apis_defaults_are_the_schemas():
+    fields = schema()
+    assert list(fields) == [f["name"] for f in __import__("json").loads(HoleFillApp.optionSchema("fill"))]
+    doors = {"fillHole": HoleFill.fillHole, "PreparedHole.fill": HoleFill.PreparedHole.fill,
+             "fillAdjacentHoles": HoleFill.fillAdjacentHoles, "makeFill": HoleFill.makeFill,
+             "fill_feature.makeFill": fill_feature.makeFill}
+    seen = set()
+    for door, fn in doors.items():
+        for name, p in inspect.signature(fn).parameters.items():
+            if name == "edgeContinuity":  # a dict in the macro API: none, as the core's empty text
+                assert p.default is None and fields[name]["default"] == "", (door, p.default)
+                seen.add(name)
+            elif name in fields:
+                seen.add(name)
+                assert p.default == fields[name]["default"], (door, name, p.default, fields[name]["default"])
+    # Every option reaches the macro API but the two whole-model extras, the CLI's alone: a macro
+    # measures the result with FreeCAD's own tools.
+    assert set(fields) - seen == {"computeVolume", "checkModel"}, set(fields) - seen
+    assert HoleFill.METHODS == tuple(fields["method"]["choices"]) and "support" not in HoleFill.METHODS
+    assert HoleFill.CONTINUITIES == tuple(fields["continuity"]["choices"])
+
+
+def test_the_fill_objects_properties_and_the_preferences_follow_the_schema():
+    fields = schema()
+    doc = FreeCAD.newDocument("schema")
+    try:
+        src = doc.addObject("Part::Feature", "Src")
+        shape = Part.Shape()
+        shape.importBrepFromString(HoleFillApp.sampleModel("bezier_patch_with_hole").decode())
+        src.Shape = shape
+        doc.recompute()
+        fill = HoleFill.makeFill(src)
+        for prop, name in (("Method", "method"), ("Continuity", "continuity"), ("Tolerance", "tolerance"),
+                           ("AngularTolerance", "angularTolerance"), ("Weights", "weights"), ("EdgeContinuity", "edgeContinuity")):
+            assert fill.getDocumentationOfProperty(prop) == HoleFill.optionTip(fields[name]), (prop, fill.getDocumentationOfProperty(prop))
+            if name != "edgeContinuity":
+                value = getattr(fill, prop)
+                value = float(value) if name == "tolerance" else value
+                assert value == fields[name]["default"], (prop, value)
+        assert list(fill.getEnumerationsOfProperty("Method")) == fields["method"]["choices"]
+        assert list(fill.getEnumerationsOfProperty("Continuity")) == fields["continuity"]["choices"]
+        assert fill.Status == "ok", fill.Status
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+    preferences.reset()
+    for pref, name in (("FillMethod", "method"), ("FillContinuity", "continuity"), ("FillTolerance", "tolerance"),
+                       ("FillAngularTolerance", "angularTolerance"), ("UvtranWeights", "weights")):
+        assert preferences.get(pref) == fields[name]["default"], (pref, preferences.get(pref))
+    assert preferences.CHOICES["FillMethod"] == HoleFill.METHODS
+
+
+def test_values_the_schema_refuses_are_refused_by_every_door_by_name():
+    shape = Part.Shape()
+    shape.importBrepFromString(HoleFillApp.sampleModel("bezier_patch_with_hole").decode())
+    hole = HoleFill.prepareHole(shape, 1)
+    for kwargs, word in ((dict(method="support"), "method must be one of"), (dict(continuity="G3"), "continuity must be one of"),
+                         (dict(tolerance=-1.0), "tolerance must be zero or positive"),
+                         (dict(angularTolerance=0.0), "angularTolerance must be positive"),
+                         (dict(maxControlPoints=8), "maxControlPoints must be a whole number at least 16"),
+                         (dict(edgeContinuity={"Edge1": "G7"}), "G7")):
+        fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, **kwargs), word)
+        fcharness.expect_error(lambda: hole.fill(**kwargs), word)
+    # The core's dictionary door names an option it does not know, and the ones it does.
+    fcharness.expect_error(lambda: hole._prepared.fill({"angularTolerence": 1e-3}), "unknown option 'angularTolerence'")
+    fcharness.expect_error(lambda: hole._prepared.fill({"tolerance": [1]}), "tolerance must be a number, a bool or a string")
+
+
+fcharness.run(globals())
