@@ -8,7 +8,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFill import preferences
+from HoleFill import labeled, optionTip, preferences
 from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
@@ -38,44 +38,51 @@ class FitPanel:
         self.form = QtWidgets.QWidget()
         self.form.setWindowTitle(translate("HoleFill", "Fit labeled surface"))
         layout = QtWidgets.QFormLayout(self.form)
-        self.ctrlU, self.ctrlV = QtWidgets.QSpinBox(), QtWidgets.QSpinBox()
-        for name, w in (("HoleFillFitCtrlU", self.ctrlU), ("HoleFillFitCtrlV", self.ctrlV)):
-            w.setObjectName(name)
-            w.setRange(4, 200)
-            w.setValue(12)
+        # Defaults, ranges and tooltips: the core's option schema (HoleFill.labeled.FIT_OPTIONS).
+        opts = labeled.FIT_OPTIONS
+
+        def integer(name, objectName):
+            w = QtWidgets.QSpinBox()
+            w.setObjectName(objectName)
+            w.setRange(int(opts[name]["minimum"]), int(opts[name]["maximum"]))
+            w.setValue(opts[name]["default"])
+            w.setToolTip(optionTip(opts[name]))
+            return w
+
+        self.ctrlU, self.ctrlV = integer("controlU", "HoleFillFitCtrlU"), integer("controlV", "HoleFillFitCtrlV")
         layout.addRow(translate("HoleFill", "Control points u:"), self.ctrlU)
         layout.addRow(translate("HoleFill", "Control points v:"), self.ctrlV)
         self.extension = QtWidgets.QComboBox()
         self.extension.setObjectName("HoleFillFitExtension")
-        self.extension.addItems(["fit", "G2", "G1", "none"])
+        self.extension.addItems(opts["extension"]["choices"])
+        self.extension.setCurrentText(opts["extension"]["default"])
+        self.extension.setToolTip(optionTip(opts["extension"]))
         layout.addRow(translate("HoleFill", "Extension:"), self.extension)
-        self.margin = QtWidgets.QSpinBox()
-        self.margin.setObjectName("HoleFillFitMargin")
-        self.margin.setRange(0, 50)
+        self.margin = integer("margin", "HoleFillFitMargin")
         layout.addRow(translate("HoleFill", "Margin layers:"), self.margin)
         self.reach = QtWidgets.QDoubleSpinBox()
         self.reach.setObjectName("HoleFillFitReach")
-        self.reach.setRange(0, 10)
+        self.reach.setRange(opts["reach"]["minimum"], opts["reach"]["maximum"])
         self.reach.setDecimals(3)
         self.reach.setSingleStep(0.05)
-        self.reach.setValue(0.05)
-        self.reach.setToolTip(translate("HoleFill", "How far the untrimmed surface reaches past the domain, as a fraction of its larger side"))
+        self.reach.setValue(opts["reach"]["default"])
+        self.reach.setToolTip(optionTip(opts["reach"]))
         layout.addRow(translate("HoleFill", "Reach past the domain:"), self.reach)
         self.weights = {}
-        for key, label, value in (("fairness", translate("HoleFill", "Isocurve fairness:"), 1e-2), ("smoothing", translate("HoleFill", "Thin-plate smoothing:"), 1e-6),
-                                  ("framePlacement", translate("HoleFill", "Frame placement:"), 1.0), ("meshFairness", translate("HoleFill", "Mesh fairness (E_Mesh):"), 0.0)):
+        for key, label in (("fairness", translate("HoleFill", "Isocurve fairness:")), ("smoothing", translate("HoleFill", "Thin-plate smoothing:")),
+                           ("framePlacement", translate("HoleFill", "Frame placement:")), ("meshFairness", translate("HoleFill", "Mesh fairness (E_Mesh):"))):
             w = QtWidgets.QDoubleSpinBox()
             w.setObjectName("HoleFillFit_" + key)
             w.setDecimals(8)
             w.setRange(0, 1e6)
-            w.setValue(value)
+            w.setValue(opts[key]["default"])
+            w.setToolTip(optionTip(opts[key]))
             layout.addRow(label, w)
             self.weights[key] = w
         self.relax = QtWidgets.QCheckBox(translate("HoleFill", "Relax the labels where they cannot be fitted"))
         self.relax.setObjectName("HoleFillFitRelaxLabels")
-        self.relax.setToolTip(translate("HoleFill", "Where the fit over the labeled map misses the tolerance or has weak control points, fit over the "
-                              "region's own flattening, turned as the labels say (the report says when it did)"))
-        self.relax.setChecked(True)
+        self.relax.setToolTip(optionTip(opts["relaxLabels"]))
+        self.relax.setChecked(opts["relaxLabels"]["default"])
         layout.addRow(self.relax)
         self.show = {}
         for key, label in (("frame", translate("HoleFill", "Show the guiding frame")), ("extended", translate("HoleFill", "Show the extended mesh")), ("surface", translate("HoleFill", "Show the surface"))):

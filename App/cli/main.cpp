@@ -48,6 +48,7 @@
 #include "mesh/mesh_io.h"
 #include "mesh/sample_meshes.h"
 #include "options/hole_fill_schema.h"
+#include "options/labeled_fit_schema.h"
 #include "options/option_sets.h"
 
 using namespace holefill;
@@ -62,7 +63,7 @@ const char* kUsage =
     "                --angular-tolerance, --curvature-tolerance, --edge-continuity, --no-crease-detection, ...]\n"
     "                [--divide CURVE.brep]  two adjacent holes: the loop split by the one edge in CURVE.brep\n"
     "                (running from one loop vertex to another), filled as two faces sharing it\n"
-    "  holefill options [SET] [--json]   an option set's options (fill): flag, default, unit, what it does\n"
+    "  holefill options [SET] [--json]   an option set's options (fill, labeled_fit): flag, default, unit, what it does\n"
     "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
     "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
     "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
@@ -78,19 +79,12 @@ const char* kUsage =
     "                G² surface over a quad cage (EPs of valence above N, 24, refused; 0: no limit); '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
-    "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--extension fit|G2|G1|none]\n"
-    "                [--margin M] [--reach F] [--fairness W] [--isocurves grid|paper] [--smoothing W] [--frame-placement W] [--mesh-fairness W]\n"
-    "                [--max-ctrl N] [--tolerance T] [--release-depth D] [--hold-labels] [--untrimmed-out S.brep] [--json]\n"
-    "                labeled fitting of a trimmed mesh region; the extension to the domain's rectangle sampled from a\n"
-    "                thin-plate fit of the region (fit), or the paper's continuation of its boundary (G2, G1: --fairness,\n"
-    "                --isocurves paper and --mesh-fairness shape it), or none; control points refined from 12x12 up to N (60; 40\n"
-    "                where scan noise could be the miss) per direction while the data max exceeds T (1e-3 of the\n"
-    "                diagonal; --ctrl alone: exactly those);\n"
-    "                labeled vertices deeper than D (0.05) of their side inside its line past a sharp turn are\n"
-    "                left free (negative: all held); where the labeled map's fit misses T, has weak control points or is\n"
-    "                ill-conditioned, the fit over the labels relaxed (the region's free flattening, turned as the labels\n"
-    "                say) is tried and kept if sound (--hold-labels: never); the untrimmed surface reaches F (0.05) of the\n"
-    "                domain's larger side past it (M grid layers at least); LABELS.json:\n"
+    "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--untrimmed-out S.brep]\n"
+    "                [--json] [labeled fitting's options, `holefill options labeled_fit`: --extension fit|G2|G1|none,\n"
+    "                --max-ctrl, --tolerance, --margin, --reach, --fairness, --isocurves, --mesh-fairness, --smoothing,\n"
+    "                --frame-placement, --release-depth, --hold-labels]\n"
+    "                labeled fitting of a trimmed mesh region: its extension to the domain's rectangle, control points\n"
+    "                refined while the data max exceeds the tolerance (--ctrl alone: exactly those); LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
     "                [--weights W.pt] [--json]\n"
@@ -125,6 +119,8 @@ Args parse(int argc, char** argv) {
   static const std::vector<std::string> flags = [] {
     std::vector<std::string> f = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--hold-labels"};  // --no-refine: mesh-fill and gnurbs
     for (const auto& b : holeFillSchema())
+      if (b.field.kind == OptionKind::Bool) f.push_back(b.field.flag);
+    for (const auto& b : labeledFitSchema())
       if (b.field.kind == OptionKind::Bool) f.push_back(b.field.flag);
     return f;
   }();
@@ -477,31 +473,16 @@ int cmdFit(const Args& a) {
   if (!a.has("--labels")) throw Error("fit: --labels LABELS.json is required");
   if (!a.has("--out")) throw Error("fit: --out OUT.brep (or .step) is required");
   LabeledFitOptions o;
+  // --ctrl NUxNV: exactly those control points, unless --max-ctrl asks to refine from them.
   if (a.has("--ctrl")) {
     const std::string c = a.get("--ctrl");
     const auto x = c.find('x');
     if (x == std::string::npos) throw Error("--ctrl takes NUxNV, e.g. 12x12, got '" + c + "'");
-    o.fit.controlU = static_cast<int>(number(c.substr(0, x), "--ctrl"));
-    o.fit.controlV = static_cast<int>(number(c.substr(x + 1), "--ctrl"));
-    o.maxControl = 0;  // exactly these, unless --max-ctrl asks to refine from them
+    setOption(labeledFitSchema(), o, "controlU", c.substr(0, x));
+    setOption(labeledFitSchema(), o, "controlV", c.substr(x + 1));
+    o.maxControl = 0;
   }
-  if (a.has("--max-ctrl")) o.maxControl = static_cast<int>(number(a.get("--max-ctrl"), "--max-ctrl"));
-  if (a.has("--tolerance")) o.tolerance = number(a.get("--tolerance"), "--tolerance");
-  if (a.has("--release-depth")) o.parameterization.releaseDepth = number(a.get("--release-depth"), "--release-depth");
-  o.relaxLabels = !a.has("--hold-labels");
-  setExtensionByName(o, a.get("--extension", "fit"));
-  if (a.has("--margin")) o.extension.marginLayers = static_cast<int>(number(a.get("--margin"), "--margin"));
-  if (a.has("--reach")) o.reach = number(a.get("--reach"), "--reach");
-  const std::string iso = a.get("--isocurves", "grid");
-  if (iso == "paper") o.extension.paperIsocurves = true;
-  else if (iso != "grid") throw Error("--isocurves must be grid or paper, got '" + iso + "'");
-  const auto weight = [&](const char* flag, double& into) {  // number() refuses negatives
-    if (a.has(flag)) into = number(a.get(flag), flag);
-  };
-  weight("--fairness", o.extension.fairness);
-  weight("--smoothing", o.fit.smoothing);
-  weight("--frame-placement", o.parameterization.framePlacement);
-  weight("--mesh-fairness", o.extension.meshFairness);
+  applyFlags(labeledFitSchema(), a, o);
   const TriangleMesh region = readMesh(a.input);
   const std::vector<LabeledSegment> labels = parseLabelsJson(readFileBytes(a.get("--labels"), 1 << 26), a.get("--labels"));
   const LabeledFitResult r = fitLabeled(region, labels, o);

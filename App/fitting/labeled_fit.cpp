@@ -347,6 +347,12 @@ void setExtensionByName(LabeledFitOptions& o, const std::string& name) {
   }
 }
 
+std::string extensionName(const LabeledFitOptions& o) {
+  if (!o.extend) return "none";
+  if (o.extensionSource == LabeledFitOptions::ExtensionSource::SmoothFit) return "fit";
+  return o.extension.order == 2 ? "G1" : "G2";
+}
+
 std::vector<std::string> LabeledFitResult::allWarnings() const {
   std::vector<std::string> all = parameterization.warnings;
   all.insert(all.end(), warnings.begin(), warnings.end());

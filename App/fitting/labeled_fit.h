@@ -108,6 +108,7 @@ void checkLabeledFitOptions(const LabeledFitOptions& options);
 // The extension by the name the doors take: "fit" (SmoothFit, the default), "G2" or "G1" (the
 // paper's continuation at that order), "none" (the region alone); Error for another name.
 void setExtensionByName(LabeledFitOptions& options, const std::string& name);
+std::string extensionName(const LabeledFitOptions& options);  // the name setExtensionByName takes back
 
 // Labels as the CLI and Python take them: {"segments": [{"label": "N", "vertices": [i, j, ...]}, ...]},
 // labels N, E, S, W (or North, East, South, West), 0-based vertex indices along the boundary.

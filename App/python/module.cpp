@@ -40,6 +40,7 @@
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
 #include "options/hole_fill_schema.h"
+#include "options/labeled_fit_schema.h"
 #include "options/option_sets.h"
 
 namespace py = pybind11;
@@ -451,24 +452,9 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("path"), "A quad cage OBJ (with # sharp/# knot/# anchor lines) as 0-based (vertices, quads, knots, sharp, anchors).");
   m.def("fitLabeled", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::string& labelsJson,
-                         int controlU, int controlV, const std::string& extension, int margin, double fairness, double smoothing,
-                         double framePlacement, double meshFairness, int maxControl, double tolerance, double releaseDepth,
-                         bool relaxLabels, double reach) {
+                         const py::dict& options) {
     return guarded([&] {
-      LabeledFitOptions o;
-      o.fit.controlU = controlU;
-      o.fit.controlV = controlV;
-      o.fit.smoothing = smoothing;
-      setExtensionByName(o, extension);
-      o.extension.marginLayers = margin;
-      o.extension.fairness = fairness;
-      o.parameterization.framePlacement = framePlacement;
-      o.extension.meshFairness = meshFairness;
-      o.maxControl = maxControl;
-      o.tolerance = tolerance;
-      o.parameterization.releaseDepth = releaseDepth;
-      o.relaxLabels = relaxLabels;
-      o.reach = reach;
+      const LabeledFitOptions o = optionsFromDict(labeledFitSchema(), options);
       const std::vector<LabeledSegment> labels = parseLabelsJson(labelsJson);
       LabeledFitResult r;
       {
@@ -488,11 +474,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
       return py::make_tuple(py::bytes(shapeToBrepString(r.fit.face)), py::bytes(shapeToBrepString(untrimmed)), r.toJson(), r.parameterization.uv,
                             frame, r.extension.mesh.vertices, Eigen::MatrixXi(r.extension.mesh.triangles));
     });
-  }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("controlU") = 12, py::arg("controlV") = 12,
-     py::arg("extension") = "fit", py::arg("margin") = 0, py::arg("fairness") = 1e-2, py::arg("smoothing") = 1e-6, py::arg("framePlacement") = 1.0,
-     py::arg("meshFairness") = 0.0, py::arg("maxControl") = LabeledFitOptions{}.maxControl, py::arg("tolerance") = 1e-3, py::arg("releaseDepth") = 0.05,
-     py::arg("relaxLabels") = true, py::arg("reach") = 0.05,
-     "Labeled fitting of a trimmed mesh region: (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("labelsJson"), py::arg("options") = py::dict(),
+     "Labeled fitting of a trimmed mesh region, options {name: value} of optionSchema('labeled_fit'): (trimmed face BREP, untrimmed surface BREP, report JSON, uv per vertex, "
      "guiding frame [(side, points)], extended mesh vertices, extended mesh triangles).");
   m.def("parameterizeCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
                                 const std::string& method, double radius, const std::string& weights) {
@@ -559,5 +542,4 @@ PYBIND11_MODULE(HoleFillApp, m) {
         py::arg("name"), "OBJ text of a bundled sample cage.");
   m.attr("__version__") = "0.1.0";
   m.attr("defaultMaxBoundary") = MeshFillOptions{}.maxBoundary;  // the doors' default, kept in the core
-  m.attr("defaultMaxControl") = LabeledFitOptions{}.maxControl;  // labeled fitting's, likewise
 }

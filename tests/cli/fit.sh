@@ -41,9 +41,9 @@ expect_error "contradictory labels" "labeled both North and South" "$T/region.ob
 expect_error "unknown label" "not N, E, S or W" "$T/region.obj" --labels "$T/badlabel.json"
 expect_error "broken JSON" "not valid JSON" "$T/region.obj" --labels "$T/broken.json"
 expect_error "bad --ctrl" "ctrl" "$T/region.obj" --labels "$T/labels.json" --ctrl 12
-expect_error "bad --extension" "fit, G2, G1 or none" "$T/region.obj" --labels "$T/labels.json" --extension G3
+expect_error "bad --extension" "--extension: extension must be one of fit, G2, G1, none" "$T/region.obj" --labels "$T/labels.json" --extension G3
 expect_error "mesh fairness on the fitted extension" "ask for extension G2 or G1" "$T/region.obj" --labels "$T/labels.json" --mesh-fairness 0.01
-expect_error "negative --mesh-fairness" "non-negative number" "$T/region.obj" --labels "$T/labels.json" --mesh-fairness -1
+expect_error "negative --mesh-fairness" "--mesh-fairness: meshFairness must be zero or positive" "$T/region.obj" --labels "$T/labels.json" --mesh-fairness -1
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --extension G2 --mesh-fairness 0.01 --out "$T/fit_emesh.brep" --json \
      >"$T/fit_emesh.json" 2>"$T/err"; then ok "fit with mesh fairness (E_Mesh)"; else bad "fit --mesh-fairness: $(cat "$T/err")"; fi
 for ext in fit G2 none; do
@@ -73,7 +73,7 @@ if "$H" fit "$T/region.obj" --labels "$T/labels.json" --extension G2 --isocurves
   ok "fit with the paper's isocurve fairness"; else bad "fit --isocurves paper: $(cat "$T/err")"; fi
 expect_error "--max-ctrl below --ctrl" "at least the larger of controlU" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
 expect_error "zero --tolerance" "tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
-expect_error "negative --reach" "--reach must be a non-negative number" "$T/region.obj" --labels "$T/labels.json" --reach -0.1
+expect_error "negative --reach" "--reach: reach must be between 0 and 10" "$T/region.obj" --labels "$T/labels.json" --reach -0.1
 # (--reach 0: the domain is the rectangle, 6 x 3 units; the default reach widens it by 0.05 of 6 a side.)
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --tolerance 1e-4 --reach 0 --out "$T/fit_refined.brep" --json \
      >"$T/fit_refined.json" 2>"$T/err"; then ok "fit with refined control points"; else bad "fit --max-ctrl: $(cat "$T/err")"; fi

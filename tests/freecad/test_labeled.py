@@ -72,7 +72,7 @@ def test_bad_labels_give_clear_errors():
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("N", labels[0][1]), ("S", labels[0][1])]), "labeled both")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("Q", labels[0][1]), labels[1]]), "not N, E, S or W")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [labels[0]]), "at least two")
-    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, extension="G7"), "fit, G2, G1 or none")
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, extension="G7"), "extension must be one of fit, G2, G1, none")
     fcharness.expect_error(lambda: HoleFill.fitLabeled(Mesh.Mesh(), labels), "empty")
 
 
@@ -100,13 +100,11 @@ def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
     assert sorted(n for n in names if n != "-") == ["E", "N", "S", "W"], names
     fit = HoleFill.makeLabeledFit(lab, controlPoints=(10, 8))
     assert fit.MeshFairness == 0.0
-    # The doors' default is the core's (LabeledFitOptions::maxControl), read from it, not copied.
-    import inspect
-    import HoleFillApp
-    assert HoleFillApp.defaultMaxControl == 60
-    for fn in (HoleFill.fitLabeled, HoleFill.makeLabeledFit):
-        assert inspect.signature(fn).parameters["maxControl"].default == HoleFillApp.defaultMaxControl, fn
-    assert fit.MaxControlPoints == HoleFillApp.defaultMaxControl and fit.Tolerance == 1e-3 and fit.ReleaseDepth == 0.05
+    # The doors' defaults are the core's (LabeledFitOptions, through optionSchema), not copies:
+    # tests/freecad/test_option_schema.py checks every one of them.
+    fields = HoleFill.optionSchema("labeled_fit")
+    assert fields["maxControl"]["default"] == 60
+    assert fit.MaxControlPoints == 60 and fit.Tolerance == 1e-3 and fit.ReleaseDepth == 0.05 and fit.Isocurves == "grid"
     import json
     rep = json.loads(fit.Report)
     assert fit.Shape.isValid() and rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3, rep

@@ -1,7 +1,8 @@
-"""Headless FreeCAD test that every door offers the fill's options as the core's schema declares
-them (HoleFillApp.optionSchema): the macro API's signatures carry its defaults, the Fill object's
-properties its defaults, choices and tooltips, the preferences start from them, and a value the
-schema refuses is refused by each door with the option named."""
+"""Headless FreeCAD test that every door offers the fill's and labeled fitting's options as the
+core's schemas declare them (HoleFillApp.optionSchema): the macro API's signatures carry their
+defaults, the Fill and LabeledFit objects' properties their defaults, choices and tooltips, the
+preferences start from them, and a value a schema refuses is refused by each door with the option
+named. (The CLI's side: tests/cli/options.sh.)"""
 import inspect
 
 import FreeCAD
@@ -10,7 +11,7 @@ import Part
 import fcharness
 import HoleFill
 import HoleFillApp
-from HoleFill import fill_feature, preferences
+from HoleFill import fill_feature, labeled, preferences
 
 
 def schema():
@@ -82,6 +83,38 @@ def test_values_the_schema_refuses_are_refused_by_every_door_by_name():
     # The core's dictionary door names an option it does not know, and the ones it does.
     fcharness.expect_error(lambda: hole._prepared.fill({"angularTolerence": 1e-3}), "unknown option 'angularTolerence'")
     fcharness.expect_error(lambda: hole._prepared.fill({"tolerance": [1]}), "tolerance must be a number, a bool or a string")
+
+
+def test_labeled_fitting_follows_its_schema_in_every_door():
+    fields = HoleFill.optionSchema("labeled_fit")
+    assert list(fields) == [f["name"] for f in __import__("json").loads(HoleFillApp.optionSchema("labeled_fit"))]
+    for fn in (HoleFill.fitLabeled, HoleFill.makeLabeledFit):
+        params = inspect.signature(fn).parameters
+        assert params["controlPoints"].default == (fields["controlU"]["default"], fields["controlV"]["default"]), fn
+        for name, f in fields.items():
+            if name in ("controlU", "controlV"):
+                continue
+            assert params[name].default == f["default"], (fn.__name__, name, params[name].default, f["default"])
+    assert set(labeled.FIT_PROPERTIES.values()) == set(fields), set(fields) ^ set(labeled.FIT_PROPERTIES.values())
+    doc = FreeCAD.newDocument("schema_fit")
+    try:
+        obj = doc.addObject("Part::FeaturePython", "Fit")
+        labeled.LabeledFitFeature(obj)
+        for prop, name in labeled.FIT_PROPERTIES.items():
+            assert obj.getDocumentationOfProperty(prop) == HoleFill.optionTip(fields[name]), prop
+            assert getattr(obj, prop) == fields[name]["default"], (prop, getattr(obj, prop), fields[name]["default"])
+            if fields[name]["kind"] == "choice":
+                assert list(obj.getEnumerationsOfProperty(prop)) == fields[name]["choices"], prop
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+    import Mesh
+    tri = Mesh.Mesh([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0), FreeCAD.Vector(0, 1, 0)])
+    for kwargs, word in ((dict(extension="G7"), "extension must be one of fit, G2, G1, none"),
+                         (dict(isocurves="wavy"), "isocurves must be one of grid, paper"),
+                         (dict(reach=11.0), "reach must be between 0 and 10"),
+                         (dict(controlPoints=(3, 12)), "controlU must be a whole number between 4 and 200"),
+                         (dict(tolerance=0.0), "tolerance must be positive")):
+        fcharness.expect_error(lambda: HoleFill.fitLabeled(tri, [("N", [0, 1])], **kwargs), word)
 
 
 fcharness.run(globals())

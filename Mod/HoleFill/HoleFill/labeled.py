@@ -14,6 +14,7 @@ import json
 from functools import partial
 
 import HoleFillApp
+from HoleFill import optionSchema, optionTip
 from HoleFill.transaction import ensureProperty
 
 __all__ = ["fitLabeled", "boundaryLoop", "cornerSplits", "segmentsOf", "makeBoundaryLabels", "makeLabeledFit"]
@@ -27,8 +28,19 @@ def _labelsJson(labels):
     return json.dumps({"segments": [{"label": str(l), "vertices": [int(v) for v in vs]} for l, vs in labels]})
 
 
-def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-               meshFairness=0.0, maxControl=HoleFillApp.defaultMaxControl, tolerance=1e-3, releaseDepth=0.05, relaxLabels=True, reach=0.05):
+FIT_OPTIONS = optionSchema("labeled_fit")
+_FIT = {name: f["default"] for name, f in FIT_OPTIONS.items()}
+# The LabeledFit object's properties and the options they hold.
+FIT_PROPERTIES = {"ControlPointsU": "controlU", "ControlPointsV": "controlV", "MaxControlPoints": "maxControl", "Tolerance": "tolerance",
+                  "Extension": "extension", "Margin": "margin", "Reach": "reach", "Fairness": "fairness", "Isocurves": "isocurves",
+                  "MeshFairness": "meshFairness", "Smoothing": "smoothing", "FramePlacement": "framePlacement",
+                  "ReleaseDepth": "releaseDepth", "RelaxLabels": "relaxLabels"}
+
+
+def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]), extension=_FIT["extension"], margin=_FIT["margin"],
+               fairness=_FIT["fairness"], smoothing=_FIT["smoothing"], framePlacement=_FIT["framePlacement"],
+               meshFairness=_FIT["meshFairness"], maxControl=_FIT["maxControl"], tolerance=_FIT["tolerance"],
+               releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], isocurves=_FIT["isocurves"]):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -49,16 +61,19 @@ def fitLabeled(mesh, labels, controlPoints=(12, 12), extension="fit", margin=0, 
     kept if it has none of those faults (the report's "labels_relaxed" says so, with a warning);
     False: the labeled map is kept. reach: how far the untrimmed surface reaches past the
     domain's rectangle, as a fraction of its larger side (the extension's margin; 0: to the
-    rectangle and `margin` grid layers; 0.05 by default). The report also holds "uv" (per vertex),
+    rectangle and `margin` grid layers). isocurves: "grid" or "paper" (the continuation's fairness
+    along the boundary and labeled isocurves, G2/G1 only). The defaults are the core's
+    (optionSchema("labeled_fit"), as `holefill options labeled_fit` lists them). The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
     triangles) of the region extended to its four-sided domain)."""
     from HoleFill.meshfill import _arrays
     from HoleFill import _shape
     v, t = _arrays(mesh)
-    face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(
-        v, t, _labelsJson(labels), int(controlPoints[0]), int(controlPoints[1]), str(extension), int(margin),
-        float(fairness), float(smoothing), float(framePlacement), float(meshFairness), int(maxControl), float(tolerance),
-        float(releaseDepth), bool(relaxLabels), float(reach))
+    options = dict(controlU=int(controlPoints[0]), controlV=int(controlPoints[1]), extension=str(extension), margin=int(margin),
+                   fairness=float(fairness), smoothing=float(smoothing), framePlacement=float(framePlacement),
+                   meshFairness=float(meshFairness), maxControl=int(maxControl), tolerance=float(tolerance),
+                   releaseDepth=float(releaseDepth), relaxLabels=bool(relaxLabels), reach=float(reach), isocurves=str(isocurves))
+    face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(v, t, _labelsJson(labels), options)
     rep = json.loads(report)
     if rep.get("log10_condition") is None:
         rep["log10_condition"] = float("inf")  # JSON has no infinity: a singular normal matrix
@@ -229,37 +244,27 @@ class LabeledFitFeature:
         add = partial(ensureProperty, obj)
 
         add("App::PropertyLink", "Labels", "Fit", "The boundary labels (and through them the mesh region)")
-        add("App::PropertyIntegerConstraint", "ControlPointsU", "Fit", "Control points along u (cubic, at least 4)", (12, 4, 200, 1))
-        add("App::PropertyIntegerConstraint", "ControlPointsV", "Fit", "Control points along v (cubic, at least 4)", (12, 4, 200, 1))
-        choices = ["fit", "G2", "G1", "none"]
-        if "Extension" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Extension", "Fit",
-                            "Extension to the four-sided domain: sampled from a thin-plate fit of the region (fit), the "
-                            "paper's continuation of its boundary (G2, G1), or none")
-            obj.Extension = choices
-        elif "fit" not in obj.getEnumerationsOfProperty("Extension"):
-            # A document saved before "fit" existed keeps its choice, with the new one offered.
-            kept = obj.Extension
-            obj.Extension = choices
-            obj.Extension = kept
-        add("App::PropertyIntegerConstraint", "Margin", "Fit", "Grid layers added around the domain", (0, 0, 50, 1))
-        add("App::PropertyFloat", "Fairness", "Weights", "Isocurve fairness of the extension", 1e-2)
-        add("App::PropertyFloat", "Smoothing", "Weights", "Thin-plate term of the fit", 1e-6)
-        add("App::PropertyFloat", "FramePlacement", "Weights", "How firmly labeled vertices keep the frame's placement", 1.0)
-        add("App::PropertyFloat", "MeshFairness", "Weights", "E_Mesh: how evenly the extension's triangles are distorted (0: off)", 0.0)
-        add("App::PropertyIntegerConstraint", "MaxControlPoints", "Fit",
-            "Control points are refined from ControlPointsU x V up to this many per direction while the data max exceeds "
-            "the tolerance (40 at most where scan noise could be the miss; 0: exactly ControlPointsU x V)",
-            (HoleFillApp.defaultMaxControl, 0, 200, 1))
-        add("App::PropertyFloat", "Tolerance", "Fit", "Data max (of the region's diagonal) that ends the refinement", 1e-3)
-        add("App::PropertyFloat", "ReleaseDepth", "Fit",
-            "Labeled vertices deeper than this fraction of their side inside its line, past a sharp turn, are left free "
-            "(negative: all held)", 0.05)
-        add("App::PropertyBool", "RelaxLabels", "Fit",
-            "Where the labeled map's fit misses the tolerance or has weak control points, fit over the region's free "
-            "flattening turned as the labels say, if that is sound", True)
-        add("App::PropertyFloat", "Reach", "Fit",
-            "How far the untrimmed surface reaches past the domain, as a fraction of its larger side (0: to the domain)", 0.05)
+        tip = {prop: optionTip(FIT_OPTIONS[name]) for prop, name in FIT_PROPERTIES.items()}
+        default = {prop: FIT_OPTIONS[name]["default"] for prop, name in FIT_PROPERTIES.items()}
+        for prop in ("ControlPointsU", "ControlPointsV", "MaxControlPoints", "Margin"):
+            f = FIT_OPTIONS[FIT_PROPERTIES[prop]]
+            add("App::PropertyIntegerConstraint", prop, "Fit", tip[prop], (default[prop], int(f["minimum"]), int(f["maximum"]), 1))
+        for prop in ("Extension", "Isocurves"):
+            choices = FIT_OPTIONS[FIT_PROPERTIES[prop]]["choices"]
+            if prop not in obj.PropertiesList:
+                obj.addProperty("App::PropertyEnumeration", prop, "Fit", tip[prop])
+                setattr(obj, prop, choices)
+                setattr(obj, prop, default[prop])
+            elif list(obj.getEnumerationsOfProperty(prop)) != choices:
+                # A document saved before a choice existed keeps its own, with the new ones offered.
+                kept = getattr(obj, prop)
+                setattr(obj, prop, choices)
+                setattr(obj, prop, kept if kept in choices else default[prop])
+        for prop in ("Tolerance", "Reach", "ReleaseDepth"):
+            add("App::PropertyFloat", prop, "Fit", tip[prop], default[prop])
+        for prop in ("Fairness", "MeshFairness", "Smoothing", "FramePlacement"):
+            add("App::PropertyFloat", prop, "Weights", tip[prop], default[prop])
+        add("App::PropertyBool", "RelaxLabels", "Fit", tip["RelaxLabels"], default["RelaxLabels"])
         add("Part::PropertyPartShape", "Untrimmed", "Result", "The untrimmed fitted surface")
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         for n in ("Untrimmed", "Report"):
@@ -274,7 +279,8 @@ class LabeledFitFeature:
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
                                           obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness,
-                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth, obj.RelaxLabels, obj.Reach)
+                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth, obj.RelaxLabels, obj.Reach,
+                                          obj.Isocurves)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):
@@ -288,9 +294,11 @@ class LabeledFitFeature:
         return None
 
 
-def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0, fairness=1e-2, smoothing=1e-6, framePlacement=1.0,
-                   meshFairness=0.0, maxControl=HoleFillApp.defaultMaxControl, tolerance=1e-3, releaseDepth=0.05,
-                   relaxLabels=True, reach=0.05, name="LabeledFit"):
+def makeLabeledFit(labelsObj, controlPoints=(_FIT["controlU"], _FIT["controlV"]), extension=_FIT["extension"], margin=_FIT["margin"],
+                   fairness=_FIT["fairness"], smoothing=_FIT["smoothing"], framePlacement=_FIT["framePlacement"],
+                   meshFairness=_FIT["meshFairness"], maxControl=_FIT["maxControl"], tolerance=_FIT["tolerance"],
+                   releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], name="LabeledFit",
+                   isocurves=_FIT["isocurves"]):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
@@ -307,6 +315,7 @@ def makeLabeledFit(labelsObj, controlPoints=(12, 12), extension="fit", margin=0,
         obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth = int(maxControl), float(tolerance), float(releaseDepth)
         obj.RelaxLabels = bool(relaxLabels)
         obj.Reach = float(reach)
+        obj.Isocurves = str(isocurves)
         if FreeCAD.GuiUp:
             obj.ViewObject.Proxy = 0
 
