@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "expect_error.h"
+
 #include "fitting/labeled_fit.h"
 #include "geometry/error.h"
 #include "geometry/surface_projection.h"
@@ -44,14 +46,7 @@ TEST(LabeledFit, ParsesLabelsAndRunsEndToEndOnAFlatRectangle) {
 // One check of the options for every door: each range is refused with the option named, before
 // any stage runs (the region here is never looked at).
 TEST(LabeledFit, OptionsOutOfRangeAreRefusedByName) {
-  const auto refused = [](const LabeledFitOptions& o, const char* word) {
-    try {
-      checkLabeledFitOptions(o);
-      ADD_FAILURE() << "accepted; expected a refusal naming " << word;
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
-    }
-  };
+  const auto refused = [](const LabeledFitOptions& o, const char* word) { expectErrorNaming([&] { checkLabeledFitOptions(o); }, word); };
   EXPECT_NO_THROW(checkLabeledFitOptions({}));
   LabeledFitOptions o;
   o.tolerance = 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "expect_error.h"
 #include "fitting/point_cloud_fit.h"
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
@@ -95,14 +96,7 @@ TEST(PointCloudFit, ABareCloudGetsItsBoundaryFoundAndChordParameters) {
 // Options out of range are refused before any stage runs, with the option named.
 TEST(PointCloudFit, OptionsOutOfRangeAreRefusedByName) {
   const FlaggedCloud c = wavyCloud(true, 12);
-  const auto refused = [&](PointCloudFitOptions o, const char* word) {
-    try {
-      fitPointCloud(c, o);
-      ADD_FAILURE() << "accepted; expected a refusal naming " << word;
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
-    }
-  };
+  const auto refused = [&](const PointCloudFitOptions& o, const char* word) { expectErrorNaming([&] { fitPointCloud(c, o); }, word); };
   PointCloudFitOptions o;
   o.fit.degree = 8;
   refused(o, "degree");

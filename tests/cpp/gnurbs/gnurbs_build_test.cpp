@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "expect_error.h"
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
 #include "gnurbs/gnurbs_build.h"
@@ -78,10 +79,5 @@ TEST(GnurbsBuild, BadTargetsAndRoundsAreRefusedByName) {
   GnurbsBuildOptions o;
   o.fit.iterations = -1;
   const Eigen::MatrixX3d fine = Eigen::MatrixX3d::Random(20, 3);
-  try {
-    buildGnurbs(cage, o, &fine);
-    FAIL() << "negative rounds accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("rounds"), std::string::npos) << e.what();
-  }
+  expectErrorNaming([&] { buildGnurbs(cage, o, &fine); }, "rounds");
 }

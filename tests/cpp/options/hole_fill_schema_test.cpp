@@ -1,8 +1,7 @@
 #include <gtest/gtest.h>
 
-#include <set>
-
 #include "geometry/error.h"
+#include "schema_checks.h"
 #include "options/hole_fill_schema.h"
 
 using namespace holefill;
@@ -39,14 +38,7 @@ TEST(HoleFillSchema, EachOptionReachesTheFieldTheFillReads) {
 TEST(HoleFillSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
   const auto& s = holeFillSchema();
   const HoleFillOptions d;
-  std::set<std::string> names, flags;
-  for (const auto& b : s) {
-    EXPECT_TRUE(names.insert(b.field.name).second) << b.field.name;
-    if (!b.field.flag.empty()) EXPECT_TRUE(flags.insert(b.field.flag).second) << b.field.flag;
-    EXPECT_FALSE(b.field.doc.empty()) << b.field.name;
-    HoleFillOptions copy;
-    EXPECT_NO_THROW(b.set(copy, b.get(d))) << b.field.name;  // the default is a value the field accepts
-  }
+  expectWellFormedSchema(s);
   EXPECT_EQ(s[0].get(d), "auto");
   EXPECT_EQ(s[1].get(d), "G1");
   // The hidden test method is not a door's choice.

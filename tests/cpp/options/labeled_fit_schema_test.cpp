@@ -1,8 +1,7 @@
 #include <gtest/gtest.h>
 
-#include <set>
-
 #include "geometry/error.h"
+#include "schema_checks.h"
 #include "options/labeled_fit_schema.h"
 
 using namespace holefill;
@@ -44,14 +43,7 @@ TEST(LabeledFitSchema, EachOptionReachesTheFieldTheFitReads) {
 TEST(LabeledFitSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
   const auto& s = labeledFitSchema();
   const LabeledFitOptions d;
-  std::set<std::string> names, flags;
-  for (const auto& b : s) {
-    EXPECT_TRUE(names.insert(b.field.name).second) << b.field.name;
-    if (!b.field.flag.empty()) EXPECT_TRUE(flags.insert(b.field.flag).second) << b.field.flag;
-    EXPECT_FALSE(b.field.doc.empty()) << b.field.name;
-    LabeledFitOptions copy;
-    EXPECT_NO_THROW(b.set(copy, b.get(d))) << b.field.name;
-  }
+  expectWellFormedSchema(s);
   LabeledFitOptions o;
   EXPECT_EQ(s[2].get(o), std::to_string(d.maxControl));
   EXPECT_EQ(s[4].get(o), "fit");

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "expect_error.h"
 #include "geometry/error.h"
 #include "geometry/json_reader.h"
 #include "options/option_sets.h"
@@ -11,10 +12,5 @@ TEST(OptionSets, EverySetNamedHasASchemaAndAnUnknownSetIsRefused) {
     const JsonValue j = parseJson(optionSetJson(name));
     EXPECT_GT(j.array.size(), 0u) << name;
   }
-  try {
-    optionSetJson("nope");
-    FAIL();
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("the sets are fill"), std::string::npos) << e.what();
-  }
+  expectErrorNaming([] { optionSetJson("nope"); }, "the sets are fill, labeled_fit");
 }
