@@ -39,3 +39,13 @@ def _addPreferencePage():
 
 
 _addPreferencePage()
+
+
+def _attachViewProviders():
+    # HoleFill's objects get their view providers from the Gui side, from the start, whether or
+    # not the workbench is ever loaded (a macro's makeFill).
+    from HoleFillGui import view_attach
+    view_attach.install()
+
+
+_attachViewProviders()

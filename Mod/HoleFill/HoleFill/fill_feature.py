@@ -89,6 +89,10 @@ def followHole(shape, edges, signature, placement=None):
 
 
 class FillFeature:
+    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
+    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
+    viewProvider = "FillViewProvider"
+
     def __init__(self, obj):
         obj.Proxy = self
         self.setupProperties(obj)
@@ -210,9 +214,6 @@ def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["conti
         obj.Weights = weights
         obj.EdgeContinuity = ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
                               for e, c in (edgeContinuity or {}).items()]
-        if FreeCAD.GuiUp:
-            from HoleFillGui import view_provider
-            view_provider.FillViewProvider(obj.ViewObject)
 
     from HoleFill.transaction import addParametric
     return addParametric(doc, "Fill hole", "Fill", setup, "the fill")

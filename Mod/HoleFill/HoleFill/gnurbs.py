@@ -202,6 +202,9 @@ class GnurbsFeature:
     """A Part::FeaturePython whose Shape is the G² surface over its Source's quad faces, rebuilt
     whenever the source changes. SharpEdges and Anchors refer to cage vertices (0-based) as
     cageFromShape numbers them."""
+    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
+    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
+    viewProvider = None
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -257,7 +260,6 @@ class GnurbsFeature:
 def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs", knots=()):
     """A parametric G-NURBS surface over `source` (a document object with quad faces) in one undo
     transaction; the source is only read. Returns the new object, or raises with nothing added."""
-    import FreeCAD
     if source is None or not hasattr(source, "Shape"):
         raise HoleFillApp.HoleFillError("makeGnurbs needs a document object with a shape as source")
 
@@ -268,8 +270,6 @@ def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs", 
         obj.Anchors = ["%d: %r %r %r" % (int(i), float(p[0]), float(p[1]), float(p[2])) for i, p in (anchors or {}).items()]
         obj.Refine = bool(refine)
         obj.Knots = ["%d-%d: %r" % (int(a), int(b), float(d)) for a, b, d in knots]
-        if FreeCAD.GuiUp:
-            obj.ViewObject.Proxy = 0
 
     from HoleFill.transaction import addParametric
     return addParametric(source.Document, "G-NURBS surface", name, setup, "the G-NURBS surface")

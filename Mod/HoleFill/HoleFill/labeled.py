@@ -159,6 +159,9 @@ class BoundaryLabelsFeature:
     """A mesh region's boundary cut into segments labeled N/E/S/W (or unlabeled), shown as
     coloured polylines; what LabeledFit objects fit by. Changing Splits or Labels recomputes the
     fits that use it."""
+    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
+    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
+    viewProvider = "LabelsViewProvider"
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -209,7 +212,6 @@ def makeBoundaryLabels(meshObj, splits=None, labels=None, cornerAngle=35.0, name
     """Boundary labels of a Mesh feature in one undo step: segments split at `splits` (loop
     positions; default: corners turning more than cornerAngle), `labels` one per segment (default
     all '-'). The mesh is only read."""
-    import FreeCAD
     if meshObj is None or not hasattr(meshObj, "Mesh"):
         raise HoleFillApp.HoleFillError("makeBoundaryLabels needs a Mesh feature")
     loop, points = boundaryLoop(meshObj.Mesh)
@@ -224,9 +226,6 @@ def makeBoundaryLabels(meshObj, splits=None, labels=None, cornerAngle=35.0, name
         obj.Loop = loop
         obj.Splits = sorted(set(int(s) for s in splits))
         obj.Labels = labels
-        if FreeCAD.GuiUp:
-            from HoleFillGui import view_provider
-            view_provider.LabelsViewProvider(obj.ViewObject)
 
     from HoleFill.transaction import addParametric
     return addParametric(meshObj.Document, "Label boundary", name, setup, "the boundary labels")
@@ -235,6 +234,9 @@ def makeBoundaryLabels(meshObj, splits=None, labels=None, cornerAngle=35.0, name
 class LabeledFitFeature:
     """A trimmed B-spline face fitted to the labels' mesh region (fitLabeled); recomputes when the
     labels, the mesh or the options change. The untrimmed surface is kept in Untrimmed."""
+    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
+    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
+    viewProvider = None
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -300,7 +302,6 @@ def makeLabeledFit(labelsObj, controlPoints=(_FIT["controlU"], _FIT["controlV"])
                    releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], name="LabeledFit",
                    isocurves=_FIT["isocurves"]):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
-    import FreeCAD
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
         raise HoleFillApp.HoleFillError("makeLabeledFit needs a BoundaryLabels object (HoleFill → Label boundary)")
 
@@ -316,8 +317,6 @@ def makeLabeledFit(labelsObj, controlPoints=(_FIT["controlU"], _FIT["controlV"])
         obj.RelaxLabels = bool(relaxLabels)
         obj.Reach = float(reach)
         obj.Isocurves = str(isocurves)
-        if FreeCAD.GuiUp:
-            obj.ViewObject.Proxy = 0
 
     from HoleFill.transaction import addParametric
     return addParametric(labelsObj.Document, "Fit labeled surface", name, setup, "the labeled fit")

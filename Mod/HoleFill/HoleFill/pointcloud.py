@@ -115,6 +115,9 @@ def _sourcePoints(obj):
 class PointCloudFitFeature:
     """A B-spline face fitted to a Points or Mesh object (fitPoints); recomputes when the source
     or the options change. Report holds the fit's numbers (JSON)."""
+    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
+    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
+    viewProvider = None
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -159,7 +162,6 @@ def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True,
                       weights=""):
     """A parametric fit of a Points or Mesh object in one undo step (tolerance in model units,
     0: 1e-3 of the diagonal; weights: BIDGCN's weights file, "" for the shipped one)."""
-    import FreeCAD
     _sourcePoints(source)  # refuse other objects before touching the document
 
     def setup(obj):
@@ -171,8 +173,6 @@ def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True,
         obj.Adaptive = bool(thb)
         obj.Iterations = int(iterations)
         obj.Weights = str(weights)
-        if FreeCAD.GuiUp:
-            obj.ViewObject.Proxy = 0
 
     from HoleFill.transaction import addParametric
     return addParametric(source.Document, "Fit point cloud", name, setup, "the point-cloud fit")
