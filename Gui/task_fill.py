@@ -1,6 +1,9 @@
-"""The Fill task panel: the hole (from the selection; one edge names its loop),
-method, continuity and tolerance, a Preview that shows the fill and its continuity
-report, OK to keep it, Cancel to leave the document exactly as it was."""
+"""The Fill task panel: the hole (from the selection; one edge names its loop), method, continuity
+and tolerance, a Preview that shows the fill as a view-only overlay with its continuity report,
+OK to make the Fill object (or change the one being edited) in one undo step, Cancel to leave
+the document exactly as it was. The hole is read and found once (HoleFill.PreparedHole): every
+Preview reuses it, and OK hands it to the Fill object, whose first recompute neither reads the
+model nor finds the hole again and, when nothing changed since the last Preview, solves nothing."""
 import json
 
 import FreeCAD
@@ -9,6 +12,7 @@ from PySide2 import QtCore, QtWidgets
 
 import HoleFill
 from HoleFill import fill_feature, preferences
+from HoleFillGui import scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
 
@@ -42,6 +46,14 @@ def formatReport(report):
 
 
 EDGE_CHOICES = ("auto", "G0", "G1", "G2")  # auto: the panel's continuity, G0 where a crease is found
+OVERLAY = "HoleFillFillPreview"
+
+
+class _Status:
+    """The panel's report box as task_dialog.create's status line."""
+
+    def __init__(self, box):
+        self.setText = box.setPlainText
 
 
 class FillTaskPanel:
@@ -97,8 +109,8 @@ class FillTaskPanel:
         self.showProjection.toggled.connect(self.updateProjection)
 
         self.source, self.edges = None, []
-        self.created = False
-        self.doc.openTransaction("Fill hole")
+        self.hole = None      # HoleFill.PreparedHole of (source, edges), made at the first Preview
+        self.previewed = None  # (options, face, report) of the last Preview
         if existing is not None:
             self.source, self.edges = existing.Source[0], list(existing.Source[1])
             self.method.setCurrentText(existing.Method)
@@ -188,24 +200,28 @@ class FillTaskPanel:
             return
         projection_overlay.show(face)
 
+    def options(self):
+        """The panel's settings as fillHole's keywords (weights: the edited Fill's, or the preferences')."""
+        return dict(method=self.method.currentText(), continuity=self.continuity.currentText(), tolerance=self.tolerance.value(),
+                    angularTolerance=self.obj.AngularTolerance if self.obj is not None else preferences.get("FillAngularTolerance"),
+                    edgeContinuity=fill_feature.edgeContinuityDict(self.edgeRequests()),
+                    weights=self.obj.Weights if self.obj is not None else preferences.get("UvtranWeights"))
+
+    def prepared(self):
+        """The hole of the current source and edges, read and found once."""
+        key = (self.source, tuple(self.edges))
+        if self.hole is None or self.hole[0] != key or not self.hole[1].isSame(self.source.Shape):
+            self.hole = (key, self.source.Shape, HoleFill.prepareHole(self.source.Shape, self.edges))
+        return self.hole[2]
+
     def runPreview(self):
+        """Fills the hole with the panel's settings and shows the face over the model (nothing is
+        added to the document); False, with the reason in the report, when it cannot."""
+        scene_overlay.remove(OVERLAY)
         if self.source is None:
             self.report.setPlainText(translate("HoleFill", "No hole selected: click an edge of the hole first."))
             return False
-        if self.obj is None:
-            self.obj = self.doc.addObject("Part::FeaturePython", "Fill")
-            self.created = True
-            fill_feature.FillFeature(self.obj)
-            self.obj.AngularTolerance = preferences.get("FillAngularTolerance")
-            self.obj.Weights = preferences.get("UvtranWeights")
-            from HoleFillGui import view_provider
-            view_provider.FillViewProvider(self.obj.ViewObject)
-        self.obj.Source = (self.source, self.edges)
-        self.obj.Method = self.method.currentText()
-        self.obj.Continuity = self.continuity.currentText()
-        self.obj.Tolerance = self.tolerance.value()
-        self.obj.Output = self.output.currentText()
-        self.obj.EdgeContinuity = self.edgeRequests()
+        options, output = self.options(), self.output.currentText()
         dlg = QtWidgets.QProgressDialog(translate("HoleFill", "Filling hole..."), translate("HoleFill", "Cancel"), 0, 100, self.form)
         dlg.setWindowModality(QtCore.Qt.WindowModal)
         dlg.setMinimumDuration(500)
@@ -215,50 +231,51 @@ class FillTaskPanel:
             QtWidgets.QApplication.processEvents()
             return not dlg.wasCanceled()
 
-        fill_feature.progressHook = progress
         try:
-            self.obj.touch()
-            self.doc.recompute()
+            # Sewn as the Fill will be, so that OK's recompute finds this very fill kept.
+            result = self.prepared().fill(progress=progress, sewn=output == "Sewn", **options)
+            face, report = result[0], result[-1]
+        except HoleFill.HoleFillError as e:
+            self.previewed = None
+            self.report.setPlainText(translate("HoleFill", "Fill failed: %s") % e)
+            return False
         finally:
-            fill_feature.progressHook = None
             dlg.close()
-        if self.obj.isValid() and self.obj.Report:
-            self.showReport(json.loads(self.obj.Report))
-            if self.source.ViewObject is not None and self.obj.Output == "Sewn":
-                self.source.ViewObject.Visibility = False
-            return True
-        self.report.setPlainText(translate("HoleFill", "Fill failed: %s") % (self.obj.getStatusString() or "see the report view"))
-        return False
-
-    def _changedSincePreview(self):
-        """The panel's settings differ from those the preview was computed with."""
-        o = self.obj
-        return (o.Method != self.method.currentText() or o.Continuity != self.continuity.currentText() or
-                abs(float(o.Tolerance) - self.tolerance.value()) > 0 or o.Output != self.output.currentText() or
-                list(o.Source[1]) != list(self.edges) or list(o.EdgeContinuity) != self.edgeRequests())
+        self.previewed = ((options, output), face, report)
+        self.showReport(report)
+        root = scene_overlay.placed_root(OVERLAY, self.source.getGlobalPlacement() if hasattr(self.source, "getGlobalPlacement")
+                                         else self.source.Placement)
+        root.addChild(scene_overlay.face_node(face, OVERLAY + "Face", (0.95, 0.62, 0.20), 0.15))
+        scene_overlay.show(root)
+        return True
 
     def accept(self):
-        if self.obj is None or not self.obj.isValid() or "Touched" in self.obj.State or self._changedSincePreview():
+        if self.previewed is None or self.previewed[0] != (self.options(), self.output.currentText()):
             if not self.runPreview():
                 return False  # keep the panel open: the report says what went wrong
-        self.doc.commitTransaction()
-        from HoleFillGui import projection_overlay
-        projection_overlay.hide()
-        FreeCADGui.Control.closeDialog()
+        options, output = self.previewed[0]
+        if self.obj is None:
+            obj = task_dialog.create(_Status(self.report), lambda: fill_feature.makeFill(
+                self.source, self.edges, output=output, prepared=self.prepared(), **options))
+        else:
+            obj = task_dialog.create(_Status(self.report), lambda: fill_feature.changeFill(
+                self.obj, self.source, self.edges, output=output, prepared=self.prepared(), **options))
+        if obj is None:
+            return False
+        if output == "Sewn" and self.source.ViewObject is not None:
+            self.source.ViewObject.Visibility = False
+        self._close()
         return True
 
     def reject(self):
+        self._close()
+        return True
+
+    def _close(self):
         from HoleFillGui import projection_overlay
         projection_overlay.hide()
-        name = self.obj.Name if (self.obj is not None and self.created) else None
-        self.doc.abortTransaction()
-        if name and self.doc.getObject(name) is not None:  # undo disabled: remove the preview by hand
-            self.doc.removeObject(name)
-        if self.source is not None and self.source.ViewObject is not None:
-            self.source.ViewObject.Visibility = True
-        self.doc.recompute()
+        scene_overlay.remove(OVERLAY)
         FreeCADGui.Control.closeDialog()
-        return True
 
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)

@@ -223,6 +223,39 @@ def test_make_fill_preview_reuses_the_prepared_hole():
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_a_prepared_hole_handed_to_make_fill_is_not_read_again_and_change_fill_is_one_undo_step():
+    # The task panel's path: Previews on a PreparedHole, then makeFill(prepared=...) (no second
+    # detection, the last fill kept), and an edit of the Fill by changeFill in one undo step; a
+    # change that fails leaves the Fill as it was.
+    from HoleFill import fill_feature
+    doc = FreeCAD.newDocument("handover")
+    doc.UndoMode = 1
+    try:
+        src = doc.addObject("Part::Feature", "Panel")
+        src.Shape = load("panel_6_sided")
+        doc.recompute()
+        edges = [HoleFill.findHoles(src.Shape)[0].edges[0]]
+        hole = HoleFill.prepareHole(src.Shape, edges)
+        face, rep = hole.fill(continuity="G1")
+        fill = HoleFill.makeFill(src, edges, continuity="G1", prepared=hole)
+        assert fill.Proxy._prepared[2] is hole
+        assert json.loads(fill.Report)["timings"] == rep["timings"], "the kept fill was solved again"
+        assert fill.Shape.isSame(face) or abs(fill.Shape.Area - face.Area) < 1e-9 * face.Area
+        fill_feature.changeFill(fill, src, edges, continuity="G2", prepared=hole)
+        assert fill.Continuity == "G2" and json.loads(fill.Report)["requested"] == "G2"
+        assert fill.Proxy._prepared[2] is hole
+        doc.undo()
+        doc.recompute()
+        assert fill.Continuity == "G1", fill.Continuity
+        box = doc.addObject("Part::Box", "Box")
+        doc.recompute()
+        fcharness.expect_error(lambda: fill_feature.changeFill(fill, box, ["Edge1"], continuity="G0"), "fill failed")
+        assert fill.Continuity == "G1" and fill.Source[0] == src and list(fill.Source[1]) == edges, (fill.Continuity, fill.Source)
+        assert fill.isValid() and fill.Status == "ok", fill.getStatusString()
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
 def test_fill_follows_its_hole_when_the_source_numbers_its_edges_anew():
     """A source re-imported or rebuilt may number its edges anew: the Fill's "Edge<k>" would then
     name an edge of another hole (here the bottom of an open box instead of its top). The Fill finds

@@ -1,5 +1,9 @@
 """GUI test: activate HoleFill, click one edge of a hole with the real mouse (xdotool),
-run "Fill hole", press OK in the task panel, and check the Fill object; screenshots saved."""
+run "Fill hole", Preview (an overlay; nothing added to the document), Preview again with
+another continuity, press OK in the task panel, and check the Fill object: the hole was read
+and found once for both Previews and OK, and OK's fill was the last Preview's, not solved again;
+screenshots saved."""
+import json
 import subprocess
 
 import FreeCAD
@@ -30,6 +34,11 @@ def click_button(button):
     subprocess.run(["xdotool", "click", "1"], check=True)
 
 
+def overlay_present(name):
+    root = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
+    return any(root.getChild(i).getName().getString() == name for i in range(root.getNumChildren()))
+
+
 def body():
     import HoleFill
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
@@ -54,6 +63,27 @@ def body():
     assert picked == [name], "selection after the click: %s" % picked
     view.saveImage(h.shot("gui_fill_1_selected.png"), 1024, 768, "White")
 
+    # Count what crosses into the core: holes read and found, and fills solved.
+    calls = {"prepare": 0, "solve": 0}
+    real_prepare = HoleFill.prepareHole
+
+    def counting_prepare(shape, hole=1):
+        calls["prepare"] += 1
+        p = real_prepare(shape, hole)
+        inner = p._prepared
+
+        class Counting:
+            def fill(self, *args):
+                calls["solve"] += 1
+                return inner.fill(*args)
+
+            def computed(self):
+                return inner.computed()
+
+        p._prepared = Counting()
+        return p
+
+    HoleFill.prepareHole = counting_prepare
     FreeCADGui.runCommand("HoleFill_FillHole")
     h.pump(800)
     # Press the task panel's OK button, as a user would.
@@ -72,15 +102,14 @@ def body():
     assert set(rows) == set(hole.edges), rows
     table.cellWidget(rows[name], 1).setCurrentText("G0")
     h.pump(200)
-    # Preview, change the continuity, Preview again: the second Preview reuses the hole the first
-    # one prepared (issue 20: the precompute/solve split), and reports the new request.
+    # Preview, change the continuity, Preview again: a view-only overlay, nothing in the document;
+    # the second Preview reuses the hole the first one read (issue 20: the precompute/solve split).
     previews = [b for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible() and b.text() == "Preview"]
     assert len(previews) == 1, [b.text() for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible()]
     click_button(previews[0])
     h.pump(1500)
-    fill = [o for o in doc.Objects if o.Name.startswith("Fill")][0]
-    prepared = fill.Proxy._prepared[2]
-    computed = prepared.computed()
+    assert not [o for o in doc.Objects if o.Name.startswith("Fill")], "a Preview added to the document"
+    assert overlay_present("HoleFillFillPreview"), "no preview overlay"
     combos = [c for c in mw.findChildren(QtWidgets.QComboBox)
               if c.isVisible() and not table.isAncestorOf(c) and c.findText("G2") >= 0]
     assert len(combos) == 1, len(combos)
@@ -88,10 +117,11 @@ def body():
     h.pump(200)
     click_button(previews[0])
     h.pump(3000)
-    import json
-    assert json.loads(fill.Report)["requested"] == "G2", fill.Report[:200]
-    assert fill.Proxy._prepared[2] is prepared and prepared.computed() == computed, prepared.computed()
-    h.log("two Previews, one prepared hole: %s" % (computed,))
+    reports = [w.toPlainText() for w in mw.findChildren(QtWidgets.QPlainTextEdit) if w.isVisible()]
+    assert any("Requested G2" in t for t in reports), reports
+    assert calls == {"prepare": 1, "solve": 2}, calls
+    h.log("two Previews, one prepared hole: %s" % (calls,))
+    QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_fill_1c_preview.png"))
     combos[0].setCurrentText("G1")
     h.pump(200)
     mw.grab().save(h.shot("gui_fill_1b_panel.png"))
@@ -100,6 +130,11 @@ def body():
     fills = [o for o in doc.Objects if o.Name.startswith("Fill")]
     assert len(fills) == 1, [o.Name for o in doc.Objects]
     fill = fills[0]
+    HoleFill.prepareHole = real_prepare
+    # OK: settings changed since the last Preview (G1 again), so one more solve, seen as a Preview;
+    # the Fill object took that prepared hole and that fill as they were.
+    assert calls == {"prepare": 1, "solve": 3}, calls
+    assert not overlay_present("HoleFillFillPreview"), "the preview overlay outlived the panel"
     assert fill.isValid() and fill.Shape.isValid(), fill.getStatusString()
     assert fill.Status == "ok" and fill.G1 <= 1e-3, (fill.Status, fill.G1)
     assert sorted(fill.Source[1]) == [name]

@@ -1,6 +1,6 @@
 """GUI test: Edit → Preferences has a HoleFill page; a value chosen there and kept with OK is in
-FreeCAD's parameters, and the Fill hole panel of a new fill starts from it (Cancel then leaves the
-document as it was)."""
+FreeCAD's parameters, and the Fill hole panel of a new fill starts from it (its OK makes a Fill
+with those settings, which one undo removes)."""
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
@@ -93,16 +93,20 @@ def body():
     combos = {c.currentText() for c in mw.findChildren(QtWidgets.QComboBox) if c.isVisible()}
     assert {"mvc", "G2", "Sewn"} <= combos, combos
     QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_preferences_fill_panel.png"))
-    # Its Preview makes a Fill that names the preferred weights.
+    # Its Preview and OK make a Fill that names the preferred weights; one undo removes it.
     preview = [b for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible() and b.text() == "Preview"][0]
     preview.click()
     h.pump(3000)
-    fills = [o for o in doc.Objects if o.Name.startswith("Fill")]
-    assert len(fills) == 1 and fills[0].Weights == weights, [(o.Name, getattr(o, "Weights", None)) for o in fills]
+    assert sorted(o.Name for o in doc.Objects) == names, "a Preview added to the document"
     for bb in mw.findChildren(QtWidgets.QDialogButtonBox):
-        b = bb.button(QtWidgets.QDialogButtonBox.Cancel)
+        b = bb.button(QtWidgets.QDialogButtonBox.Ok)
         if bb.isVisible() and b is not None and b.isVisible():
             b.click()
+    h.pump(1500)
+    fills = [o for o in doc.Objects if o.Name.startswith("Fill")]
+    assert len(fills) == 1 and fills[0].Weights == weights, [(o.Name, getattr(o, "Weights", None)) for o in fills]
+    assert fills[0].Method == "mvc" and fills[0].Continuity == "G2" and fills[0].Output == "Sewn", fills[0].Method
+    doc.undo()
     h.pump(600)
     assert sorted(o.Name for o in doc.Objects) == names, sorted(o.Name for o in doc.Objects)
     preferences.reset()

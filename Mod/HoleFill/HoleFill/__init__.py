@@ -164,12 +164,20 @@ class PreparedHole:
         """As fillHole, on this hole."""
         options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
                                edgeContinuity, detectCreases, modelAccuracy, weights)
-        face, model, rep = self._prepared.fill(options, progress, bool(sewn))
+        # The last fill is kept: asked again with the same options (a Preview, then OK), it is
+        # returned as it was, not solved again.
+        key = (json.dumps(options, sort_keys=True), bool(sewn))
+        last = getattr(self, "_last", None)
+        if last is not None and last[0] == key:
+            face, model, rep = last[1]
+        else:
+            face, model, rep = self._prepared.fill(options, progress, bool(sewn))
         report = json.loads(rep)
         if report["status"] in ("failed", "cancelled"):
             where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
             raise HoleFillError("fill %s at stage '%s': %s%s" % (report["status"], report["failed_stage"],
                                                                  report["message"], " (edges %s)" % where if where else ""))
+        self._last = (key, (face, model, rep))
         f = _shape(face).Faces[0]
         if sewn:
             return f, _shape(model), report
@@ -259,17 +267,20 @@ def continuityReport(face, shape, hole=None):
 
 def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None,
-             weights=_FILL["weights"]):
+             weights=_FILL["weights"], prepared=None):
     """Create a parametric Fill object on `source` (a document object with a Shape).
     edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.
     edgeContinuity: per-edge requests as in fillHole, kept in the EdgeContinuity property;
     weights: UVTran's weights file as in fillHole, kept in the Weights property.
+    prepared: a PreparedHole (prepareHole) of this source's shape and these edges, e.g. the one
+    a Preview filled: the object's first recompute then neither reads the model nor finds the hole
+    again, and solves nothing when its options are those of the prepared hole's last fill.
     The object recomputes when the source changes; the source is never modified.
     Runs inside an undo transaction; on failure the document is left as it was and
     HoleFillError is raised."""
     from HoleFill import fill_feature
     return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc,
-                                 edgeContinuity, weights)
+                                 edgeContinuity, weights, prepared)
 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402

@@ -12,10 +12,6 @@ from HoleFill.transaction import ensureProperty
 OUTPUTS = ("Face", "Sewn")  # what a Fill object holds: the patch alone, or the source with it sewn in
 
 
-# Set by the Gui while it recomputes a Fill: callable(fraction) -> bool (False cancels).
-progressHook = None
-
-
 def edgeContinuityDict(entries):
     """["Edge5=G0", ...] (the EdgeContinuity property) -> {"Edge5": "G0", ...}."""
     out = {}
@@ -151,7 +147,7 @@ class FillFeature:
                     obj.setPropertyStatus("Source", "-NoRecompute")
         res = self.prepared(src.Shape, edges).fill(method=obj.Method, continuity=obj.Continuity,
                                                    tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
-                                                   sewn=obj.Output == "Sewn", progress=progressHook,
+                                                   sewn=obj.Output == "Sewn",
                                                    edgeContinuity=edgeContinuityDict(obj.EdgeContinuity),
                                                    weights=obj.Weights)
         obj.Shape = res[1] if obj.Output == "Sewn" else res[0]
@@ -178,8 +174,13 @@ class FillFeature:
         if last is not None and last[0] == key and last[1].isSame(shape):
             return last[2]
         hole = HoleFill.prepareHole(shape, edges)
-        self._prepared = (key, shape, hole)
+        self.keepPrepared(shape, edges, hole)
         return hole
+
+    def keepPrepared(self, shape, edges, hole):
+        """Takes `hole`, prepared elsewhere (the task panel's Previews) for `shape` and `edges`, as
+        this object's: its next recompute reuses it instead of reading the model again."""
+        self._prepared = (edges if edges == 1 else tuple(edges), shape, hole)
 
     def __getstate__(self):
         return None
@@ -192,7 +193,8 @@ _FILL = {name: f["default"] for name, f in HoleFill.FILL_OPTIONS.items()}
 
 
 def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
-             angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None, weights=_FILL["weights"]):
+             angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None, weights=_FILL["weights"],
+             prepared=None):
     if source is None or not hasattr(source, "Shape"):
         raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
     doc = doc or source.Document
@@ -203,17 +205,33 @@ def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["conti
         if not holes:
             raise HoleFill.HoleFillError("%s has no holes" % source.Label)
         edges = holes[0]["edges"][:1]
+
     def setup(obj):
         FillFeature(obj)
-        obj.Source = (source, list(edges))
-        obj.Method = method
-        obj.Continuity = continuity
-        obj.Tolerance = tolerance
-        obj.AngularTolerance = angularTolerance
-        obj.Output = output
-        obj.Weights = weights
-        obj.EdgeContinuity = ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
-                              for e, c in (edgeContinuity or {}).items()]
+        _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared)
 
     from HoleFill.transaction import addParametric
     return addParametric(doc, "Fill hole", "Fill", setup, "the fill")
+
+
+def changeFill(obj, source, edges, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
+               angularTolerance=_FILL["angularTolerance"], output="Face", edgeContinuity=None, weights=_FILL["weights"],
+               prepared=None):
+    """Sets an existing Fill's hole and options in one undo step and recomputes it; on failure
+    the Fill is left as it was and HoleFillError is raised."""
+    from HoleFill.transaction import changeParametric
+    return changeParametric(obj, "Edit fill", lambda o: _setFill(o, source, edges, method, continuity, tolerance, angularTolerance,
+                                                                 output, edgeContinuity, weights, prepared), "the fill")
+
+
+def _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared):
+    obj.Source = (source, list(edges))
+    obj.Method = method
+    obj.Continuity = continuity
+    obj.Tolerance = tolerance
+    obj.AngularTolerance = angularTolerance
+    obj.Output = output
+    obj.Weights = weights
+    obj.EdgeContinuity = ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in (edgeContinuity or {}).items()]
+    if prepared is not None:  # a hole read and found for these edges already (the task panel's)
+        obj.Proxy.keepPrepared(source.Shape, list(edges), prepared)

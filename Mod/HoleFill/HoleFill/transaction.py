@@ -26,6 +26,25 @@ def addParametric(doc, title, name, setup, what):
     return obj
 
 
+def changeParametric(obj, title, change, what):
+    """change(obj) under the undo title `title`, then a recompute; when the recompute fails the
+    change is undone (the object keeps its properties and shape) and HoleFillError raised."""
+    doc = obj.Document
+    doc.openTransaction(title)
+    try:
+        change(obj)
+        obj.touch()
+        doc.recompute()
+        if not obj.isValid():
+            raise HoleFillApp.HoleFillError("%s failed: %s" % (what, obj.getStatusString() or "see the report view"))
+    except Exception:
+        doc.abortTransaction()
+        doc.recompute()
+        raise
+    doc.commitTransaction()
+    return obj
+
+
 def ensureProperty(obj, kind, name, group, doc, default=None):
     """Adds property `name` to obj unless it has it, set to `default` when one is given."""
     if name not in obj.PropertiesList:
