@@ -1,8 +1,9 @@
 // holefill: the command-line door into the core (DESIGN.md), as thin as the
-// Python one. Exit codes: 0 done; 1 bad usage or input (one clear line on
-// stderr, nothing written); 2 the fill failed (nothing written); 3 the fill was
-// written but did not reach the requested continuity (the report says what it reached);
-// 4 holefill crashed on a step that is not reading the input (a bug; nothing left written).
+// Python one. Exit codes, one rule for every verb (geometry/outcome.h's exitCode of the verb's
+// Result): 0 done; 3 written, but a goal was missed (a tolerance, the data, a valid shell, a hole
+// left open: the report and stderr say which); 2 failed or cancelled (nothing written); 1 bad usage
+// or input (one clear line on stderr, nothing written); 4 holefill crashed on a step that is not
+// reading the input (a bug; nothing left written).
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRep_Builder.hxx>
 #include <Message.hxx>
@@ -209,7 +210,7 @@ int cmdHoles(const Args& a) {
   return 0;
 }
 
-// fill --divide: exit codes as for one fill (0 ok, 3 tolerance not met, 2 failed: nothing written).
+// fill --divide: the two sides' worse outcome (outcome(AdjacentFillResult)).
 int fillAdjacent(const Args& a, const TopoDS_Shape& shape, const HoleFillOptions& o) {
   if (a.has("--all-holes") || a.get("--hole") == "all") throw Error("--divide splits one hole: name it with --edges or --hole K");
   const TopoDS_Shape curve = readShape(a.get("--divide"));
@@ -229,7 +230,7 @@ int fillAdjacent(const Args& a, const TopoDS_Shape& shape, const HoleFillOptions
     edges = det.holes[k - 1].edgeIndices();
   }
   const AdjacentFillResult r = fillAdjacentHoles(shape, edges, TopoDS::Edge(curveEdges(1)), o);
-  const int code = r.status == FillStatus::Ok ? 0 : r.status == FillStatus::ToleranceNotMet ? 3 : 2;
+  const int code = exitCode(outcome(r));
   if (code != 2) {
     OutputSet outputs;
     outputs.write(a.get("--out"), [&](const std::string& p) { writeShape(r.shape, p); });
@@ -284,11 +285,9 @@ int cmdFill(const Args& a) {
     results.push_back(fillHole(shape, k - 1, o));
   }
   const HoleFillResult& last = results.back();
-  int code = 0;
-  for (const auto& r : results) {
-    if (r.status == FillStatus::Failed || r.status == FillStatus::Cancelled) code = 2;
-    else if (r.status == FillStatus::ToleranceNotMet && code == 0) code = 3;
-  }
+  std::vector<Outcome> outcomes;
+  for (const auto& r : results) outcomes.push_back(outcome(r));
+  const int code = exitCode(outcomes);
   if (code != 2) {
     OutputSet outputs;
     outputs.write(a.get("--out"), [&](const std::string& p) { writeShape(last.shape, p); });
@@ -357,8 +356,7 @@ int cmdMeshHoles(const Args& a) {
   return 0;
 }
 
-// Exit 0 when every asked-for hole was filled, 2 when none was (nothing written), 3 when some
-// stayed open (the result is written and the report says which and why).
+// Holes left open: Warned (written, the report says which and why); none filled: Failed.
 int cmdMeshFill(const Args& a) {
   if (a.input.empty()) throw Error("mesh-fill: no input file");
   if (!a.has("--out")) throw Error("mesh-fill: --out OUT is required");
@@ -374,7 +372,7 @@ int cmdMeshFill(const Args& a) {
   else if (triangulation != "angle") throw Error("--triangulation must be angle, dihedral or auto, got '" + triangulation + "'");
   const MeshFillResult r = fillMeshHoles(readMesh(a.input), o);
   if (r.fills.empty()) throw Error("the mesh has no holes (it is closed); nothing written");
-  const int code = r.filledHoles == 0 && r.openHoles > 0 ? 2 : (r.openHoles > 0 ? 3 : 0);
+  const int code = exitCode(r.outcome());
   if (code != 2) writeMesh(r.mesh, a.get("--out"));
   if (a.has("--json")) {
     std::cout << r.toJson() << "\n";
@@ -413,8 +411,7 @@ Eigen::MatrixX3d readPoints(const std::string& path) {
   return out;
 }
 
-// Exit 0 when written with every G² condition met, 3 when written with warnings (the report
-// says which EP fell short and by how much).
+// Written with warnings (an EP short of its conditions, an invalid shell): Warned.
 int cmdGnurbs(const Args& a) {
   if (a.input.empty()) throw Error("gnurbs: no cage file");
   if (!a.has("--out")) throw Error("gnurbs: --out OUT.step (or .brep) is required");
@@ -464,10 +461,10 @@ int cmdGnurbs(const Args& a) {
   }
   // An invalid shell is written (to look at) but never passes as a success.
   for (const auto& w : r.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  return r.sound() ? 0 : 3;
+  return exitCode(r.outcome());
 }
 
-// Exit 0 when written, 3 when written with warnings (folded triangles, an invalid trimmed face, the data missed).
+// Folded triangles, an invalid trimmed face or the data missed: Warned (LabeledFitResult::outcome).
 int cmdFit(const Args& a) {
   if (a.input.empty()) throw Error("fit: no region mesh given");
   if (!a.has("--labels")) throw Error("fit: --labels LABELS.json is required");
@@ -503,7 +500,7 @@ int cmdFit(const Args& a) {
                 r.fit.valid ? "valid" : "INVALID", r.seconds);
   }
   for (const auto& w : r.allWarnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  return r.parameterization.flippedTriangles > 0 || !r.fit.valid || !r.metTolerance ? 3 : 0;
+  return exitCode(r.outcome());
 }
 
 // A point-cloud file as flagged; bare x y z lines are completed by the core (point_cloud_fit.h).
@@ -550,7 +547,7 @@ int cmdParam(const Args& a) {
   return 0;
 }
 
-// Exit 0 when written and the tolerance met, 3 when written without meeting it.
+// The tolerance not met: Warned.
 int cmdFitPoints(const Args& a) {
   if (a.input.empty()) throw Error("fit-points: no point cloud given (lines x y z flag [u v])");
   if (!a.has("--out")) throw Error("fit-points: --out OUT.brep (or .step) is required");
@@ -576,7 +573,7 @@ int cmdFitPoints(const Args& a) {
                 r.fit.space.levels(), a.get("--out").c_str());
   }
   for (const auto& w : r.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  return r.fit.metTolerance ? 0 : 3;
+  return exitCode(r.outcome());
 }
 
 int cmdSamples(const Args& a) {

@@ -47,5 +47,6 @@ AdjacentFillResult fillAdjacentHoles(const TopoDS_Shape& model, const std::vecto
 
 // {"status", "message", "shared_edge", "shape_valid", "across": {continuity fields}, "fills": [first, second]}.
 std::string toJson(const AdjacentFillResult& r);
+Outcome outcome(const AdjacentFillResult& r);  // the worse side's, with its stage
 
 }  // namespace holefill

@@ -679,6 +679,19 @@ std::string toJson(const HoleDetectionResult& d) {
   return j.str();
 }
 
+Outcome outcome(const HoleFillResult& r) {
+  Outcome o;
+  o.status = r.status == FillStatus::Ok                ? Status::Ok
+             : r.status == FillStatus::ToleranceNotMet ? Status::Warned
+             : r.status == FillStatus::Cancelled       ? Status::Cancelled
+                                                       : Status::Failed;
+  if (o.status == Status::Failed || o.status == Status::Cancelled) o.stage = toString(r.failedStage);
+  o.message = r.message;
+  o.warnings = r.warnings;
+  o.faulting = r.faultyEdges;
+  return o;
+}
+
 std::string toJson(const HoleFillResult& r) {
   JsonWriter j;
   j.beginObject();

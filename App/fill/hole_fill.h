@@ -9,6 +9,8 @@
 // (empty shape, no such edges) throw holefill::Error. OCCT exceptions never leave.
 #pragma once
 
+#include "geometry/outcome.h"
+
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <functional>
@@ -186,6 +188,8 @@ BSplineSurface uvtranProjectionSurface(const TopoDS_Shape& model, const std::vec
                                        const HoleFillOptions& options = {});
 
 std::string toJson(const HoleFillResult& r);
+// Ok, Warned (tolerance_not_met: the report's own, more precise name), Failed at its stage, Cancelled.
+Outcome outcome(const HoleFillResult& r);
 std::string toJson(const HoleDetectionResult& r);
 
 }  // namespace holefill

@@ -359,10 +359,26 @@ std::vector<std::string> LabeledFitResult::allWarnings() const {
   return all;
 }
 
+Outcome LabeledFitResult::outcome() const {
+  Outcome o;
+  o.warnings = allWarnings();
+  std::vector<std::string> missed;
+  if (parameterization.flippedTriangles > 0) missed.push_back(std::to_string(parameterization.flippedTriangles) + " folded triangles in the map");
+  if (!fit.valid) missed.push_back("the trimmed face is invalid");
+  if (!metTolerance) missed.push_back("the data is missed");
+  o.status = missed.empty() ? Status::Ok : Status::Warned;
+  char line[120];
+  std::snprintf(line, sizeof line, "%dx%d control points, data max %.2e of the diagonal", fit.surface.numU(), fit.surface.numV(), fit.dataMax);
+  o.message = line;
+  for (const auto& m : missed) o.message += "; " + m;
+  return o;
+}
+
 std::string LabeledFitResult::toJson() const {
   JsonWriter j;
-  j.beginObject()
-      .field("width", parameterization.width)
+  j.beginObject();
+  writeOutcomeFields(j, outcome());
+  j.field("width", parameterization.width)
       .field("height", parameterization.height)
       .field("frame_degree", parameterization.frame.degree)
       .field("frame_max_deviation", parameterization.frame.maxDeviation)

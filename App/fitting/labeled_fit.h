@@ -4,6 +4,8 @@
 // the region's boundary (tensor_fit.h). `extend = false` fits the region alone, for comparison.
 #pragma once
 
+#include "geometry/outcome.h"
+
 #include <string>
 #include <vector>
 
@@ -93,6 +95,8 @@ struct LabeledFitResult {
   std::vector<std::string> warnings;     // the fit's own (an extension given up); allWarnings() adds the parameterization's
   std::vector<std::string> allWarnings() const;
   double seconds = 0;
+  // Warned where the map keeps folded triangles, the trimmed face is invalid or the data is missed.
+  Outcome outcome() const;
   std::string toJson() const;
 };
 

@@ -1,6 +1,7 @@
 #include "fitting/point_cloud_fit.h"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <cstdio>
 
 #include "brep/thb_faces.h"
 #include "fitting/cloud_boundary.h"
@@ -51,9 +52,22 @@ std::vector<std::string> PointCloudFitResult::warnings() const {
   return w;
 }
 
+Outcome PointCloudFitResult::outcome() const {
+  Outcome o;
+  o.warnings = warnings();
+  o.status = fit.metTolerance ? Status::Ok : Status::Warned;
+  char line[120];
+  std::snprintf(line, sizeof line, "%s after %zu iterations: max error %.2e of the diagonal", fit.metTolerance ? "tolerance met" : "tolerance NOT met",
+                fit.history.size(), fit.history.empty() ? 0.0 : fit.history.back().maxError);
+  o.message = line;
+  return o;
+}
+
 std::string PointCloudFitResult::toJson() const {
   JsonWriter j;
-  j.beginObject().key("parameterization").raw(parameterization.toJson()).field("boundary_found", completion.found);
+  j.beginObject();
+  writeOutcomeFields(j, outcome());
+  j.key("parameterization").raw(parameterization.toJson()).field("boundary_found", completion.found);
   fit.writeFields(j);
   j.field("warnings", warnings()).endObject();
   return j.str();

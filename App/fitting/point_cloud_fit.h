@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fitting/cloud_parameterization.h"
+#include "geometry/outcome.h"
 #include "fitting/thb_fit.h"
 #include "geometry/flagged_cloud.h"
 
@@ -40,6 +41,7 @@ struct PointCloudFitResult {
   ThbFitResult fit;
   TopoDS_Shape shape;                      // a face, or a compound of cell faces (options.cellFaces)
   std::vector<std::string> warnings() const;  // the parameterization's, and a folding surface
+  Outcome outcome() const;                    // Warned where the tolerance is not met
   std::string toJson() const;                 // {"parameterization": …, "boundary_found": n, thb_fit.h's fields, "warnings"}
 };
 

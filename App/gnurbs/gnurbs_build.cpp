@@ -31,6 +31,18 @@ std::vector<std::string> GnurbsBuildResult::warnings() const {
   return w;
 }
 
-std::string GnurbsBuildResult::toJson() const { return gnurbsReportJson(surface, continuity, &brep, seconds, fit ? &*fit : nullptr); }
+Outcome GnurbsBuildResult::outcome() const {
+  Outcome o;
+  o.warnings = warnings();
+  o.status = sound() ? Status::Ok : Status::Warned;
+  o.message = std::to_string(brep.faces) + " faces in " + (brep.closed ? "a closed" : "an open") + " shell, " +
+              (brep.valid ? "valid" : "INVALID") + (surface.warnings.empty() ? "" : ", with warnings");
+  return o;
+}
+
+std::string GnurbsBuildResult::toJson() const {
+  const Outcome o = outcome();
+  return gnurbsReportJson(surface, continuity, &brep, seconds, fit ? &*fit : nullptr, &o);
+}
 
 }  // namespace holefill

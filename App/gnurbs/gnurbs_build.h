@@ -8,6 +8,8 @@
 
 #include <Eigen/Dense>
 #include <optional>
+
+#include "geometry/outcome.h"
 #include <string>
 
 #include "gnurbs/g2_gnurbs.h"
@@ -32,7 +34,8 @@ struct GnurbsBuildResult {
   double seconds = 0;                  // build (and fit) and B-rep, not the continuity measurement
   bool sound() const { return brep.valid && surface.warnings.empty(); }
   std::vector<std::string> warnings() const;  // the construction's, and the invalid shell's
-  std::string toJson() const;                 // gnurbsReportJson's, with "fit" after a fit
+  Outcome outcome() const;                    // Ok when sound, else Warned with the warnings
+  std::string toJson() const;                 // gnurbsReportJson's, with "fit" after a fit, and the outcome's status
 };
 
 // `target`: null to build over the cage as it is; points to fit the cage to them first. Throws

@@ -35,10 +35,12 @@ GnurbsContinuity measureCageContinuity(const QuadCage& cage, const FaceJetFuncti
   return c;
 }
 
-std::string gnurbsReportJson(const G2GnurbsResult& r, const GnurbsContinuity& c, const GnurbsBrep* brep, double seconds, const GnurbsFitResult* fit) {
+std::string gnurbsReportJson(const G2GnurbsResult& r, const GnurbsContinuity& c, const GnurbsBrep* brep, double seconds, const GnurbsFitResult* fit,
+                             const Outcome* outcome) {
   JsonWriter j;
-  j.beginObject()
-      .field("cage_vertices", static_cast<int>(r.cage.vertices.rows()))
+  j.beginObject();
+  if (outcome) writeOutcomeFields(j, *outcome);
+  j.field("cage_vertices", static_cast<int>(r.cage.vertices.rows()))
       .field("cage_faces", static_cast<int>(r.cage.quads.rows()))
       .field("refinements", r.refinements)
       .field("refinement_reason", r.refinementReason)

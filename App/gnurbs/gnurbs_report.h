@@ -7,6 +7,7 @@
 
 #include "gnurbs/g2_gnurbs.h"
 #include "gnurbs/gnurbs_brep.h"
+#include "geometry/outcome.h"
 #include "gnurbs/gnurbs_fit.h"
 
 namespace holefill {
@@ -25,7 +26,8 @@ GnurbsContinuity measureCageContinuity(const QuadCage& cage, const FaceJetFuncti
 GnurbsContinuity measureGnurbsContinuity(const G2GnurbsResult& result, int samplesPerEdge = 21);
 
 // `fit`: the distances of a fit to a target (gnurbs_fit.h), reported under "fit"; null for a build.
+// `outcome`: the build's status (gnurbs_build.h), first in the report; null leaves it out.
 std::string gnurbsReportJson(const G2GnurbsResult& result, const GnurbsContinuity& continuity, const GnurbsBrep* brep,
-                             double seconds, const GnurbsFitResult* fit = nullptr);
+                             double seconds, const GnurbsFitResult* fit = nullptr, const Outcome* outcome = nullptr);
 
 }  // namespace holefill

@@ -1,6 +1,7 @@
 #include "mesh/mesh_hole_fill.h"
 
 #include <algorithm>
+#include <set>
 #include <chrono>
 #include <unordered_map>
 #include <unordered_set>
@@ -262,10 +263,36 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
   return result;
 }
 
+Outcome MeshFillResult::outcome() const {
+  Outcome o;
+  for (const MeshHoleFill& f : fills)
+    if (!f.filled) o.faulting.push_back(f.hole);
+  o.warnings = warnings;
+  if (cancelled) {
+    o.status = Status::Cancelled;
+    o.stage = "fill";
+    o.message = "cancelled";
+  } else if (filledHoles == 0 && openHoles > 0) {
+    o.status = Status::Failed;
+    o.stage = "fill";
+    std::set<std::string> reasons;
+    for (const MeshHoleFill& f : fills)
+      if (!f.message.empty()) reasons.insert(f.message);
+    o.message = "no hole was filled";
+    for (const auto& why : reasons) o.message += (why == *reasons.begin() ? ": " : "; ") + why;
+  } else if (openHoles > 0) {
+    o.status = Status::Warned;
+    o.message = std::to_string(openHoles) + " of " + std::to_string(fills.size()) + " holes left open";
+  } else {
+    o.message = std::to_string(filledHoles) + " holes filled";
+  }
+  return o;
+}
+
 std::string MeshFillResult::toJson() const {
   JsonWriter w;
   w.beginObject();
-  w.field("status", filledHoles > 0 || openHoles == 0 ? "ok" : "nothing filled");
+  writeOutcomeFields(w, outcome());
   w.field("vertices", static_cast<int>(mesh.vertices.rows()));
   w.field("triangles", static_cast<int>(mesh.triangles.rows()));
   w.field("holes", static_cast<int>(fills.size()));

@@ -9,6 +9,8 @@
 // Field's quality min/max/mean) plus time.
 #pragma once
 
+#include "geometry/outcome.h"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -74,6 +76,9 @@ struct MeshFillResult {
   bool cancelled = false;
   double seconds = 0;
   std::vector<std::string> warnings;
+  // Failed when no hole was filled and one is left open, Warned when some are left open
+  // (faulting: their detection indices), Cancelled, else Ok.
+  Outcome outcome() const;
   std::string toJson() const;
 };
 

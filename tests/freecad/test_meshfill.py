@@ -54,9 +54,9 @@ def test_selected_holes_and_max_boundary():
     one, rep = HoleFill.fillMeshHoles(m, holes=[holes[1]])
     assert rep["filled"] == 1 and rep["open"] == 1 and not rep["closed"]
     assert "not asked for" in [h for h in rep["hole_fills"] if not h["filled"]][0]["message"]
-    none_rep = HoleFill.fillMeshHoles(m, maxBoundary=2)[1]
-    assert none_rep["filled"] == 0
-    assert all("max-boundary" in h["message"] for h in none_rep["hole_fills"])
+    # Nothing filled is a failed fill: HoleFillError with the holes' reasons (one rule, as fillHole).
+    fcharness.expect_error(lambda: HoleFill.fillMeshHoles(m, maxBoundary=2), "mesh fill failed at stage 'fill': no hole was filled")
+    fcharness.expect_error(lambda: HoleFill.fillMeshHoles(m, maxBoundary=2), "max-boundary")
 
 
 def test_make_mesh_fill_adds_an_object_in_one_undo_step():

@@ -46,6 +46,19 @@ METHODS = tuple(FILL_OPTIONS["method"]["choices"])
 CONTINUITIES = tuple(FILL_OPTIONS["continuity"]["choices"])
 
 
+def raiseOnFailure(report, what):
+    """The macro API's one rule for a Result's outcome (App/geometry/outcome.h): a report whose
+    status is failed or cancelled raises HoleFillError naming `what`, the stage, the message and
+    the elements at fault; any other status (ok, and the Result's own name for a missed goal,
+    e.g. tolerance_not_met or warned) returns the report to be read."""
+    if report.get("status") in ("failed", "cancelled"):
+        stage = report.get("failed_stage")
+        faulting = report.get("faulty_edges") or []
+        raise HoleFillError("%s %s%s: %s%s" % (what, report["status"], " at stage '%s'" % stage if stage else "", report["message"],
+                                               " (edges %s)" % ", ".join("Edge%d" % e for e in faulting) if faulting else ""))
+    return report
+
+
 def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
                  edgeContinuity=None, detectCreases=None, modelAccuracy=None, weights=None):
     """fillHole's keywords as the core's option dict (checked there, by the schema)."""
@@ -172,11 +185,7 @@ class PreparedHole:
             face, model, rep = last[1]
         else:
             face, model, rep = self._prepared.fill(options, progress, bool(sewn))
-        report = json.loads(rep)
-        if report["status"] in ("failed", "cancelled"):
-            where = ", ".join("Edge%d" % e for e in report["faulty_edges"])
-            raise HoleFillError("fill %s at stage '%s': %s%s" % (report["status"], report["failed_stage"],
-                                                                 report["message"], " (edges %s)" % where if where else ""))
+        report = raiseOnFailure(json.loads(rep), "fill")
         self._last = (key, (face, model, rep))
         f = _shape(face).Faces[0]
         if sewn:
@@ -235,9 +244,7 @@ def fillAdjacentHoles(shape, hole, divider, method=_FILL["method"], continuity=_
     options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints)
     edges = _edgeIndices(shape, hole)
     faces, model, rep = HoleFillApp.fillAdjacentHoles(_brep(shape), edges, _brep(divider), options, progress)
-    report = json.loads(rep)
-    if report["status"] in ("failed", "cancelled"):
-        raise HoleFillError("adjacent fill %s: %s" % (report["status"], report["message"]))
+    report = raiseOnFailure(json.loads(rep), "adjacent fill")
     fs = _shape(faces).Faces
     return (fs[0], fs[1]), _shape(model), report
 

@@ -84,7 +84,9 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=None, refine=True, fairIteration
     across creases), "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes)
     or "auto" (per hole: minimum angle where a crease of the surrounding mesh reaches the hole).
     The report has per hole: new_vertices, new_triangles, min/max/mean_quality (Field's
-    2·r_in/R_circ), share_quality_0_7, seconds, message; and closed / closed_when_welded."""
+    2·r_in/R_circ), share_quality_0_7, seconds, message; and closed / closed_when_welded; its
+    status is ok, or warned where holes stay open. When holes were asked for and none could be
+    filled (or the fill was cancelled), HoleFillError is raised with each hole's reason."""
     v, t = _arrays(mesh)
     indices = [int(h["index"]) if isinstance(h, dict) else int(h) for h in (holes or [])]
     if holes is not None and not indices:
@@ -95,7 +97,8 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=None, refine=True, fairIteration
                                                int(smoothIterations), float(densityFactor), float(closenessScale),
                                                float(featureScale), progress, shapeOrder=int(shapeOrder),
                                                triangulation=str(triangulation))
-    return _mesh(nv, nt), json.loads(report)
+    from HoleFill import raiseOnFailure
+    return _mesh(nv, nt), raiseOnFailure(json.loads(report), "mesh fill")
 
 
 def makeMeshFill(source, holes=None, maxBoundary=None, name=None, **options):
@@ -105,9 +108,8 @@ def makeMeshFill(source, holes=None, maxBoundary=None, name=None, **options):
     import FreeCAD
     doc = source.Document
     filled, report = fillMeshHoles(source.Mesh, holes=holes, maxBoundary=maxBoundary, **options)
-    if report["filled"] == 0:
-        reasons = "; ".join(sorted({h["message"] for h in report["hole_fills"] if h["message"]})) or "the mesh has no holes"
-        raise HoleFillApp.HoleFillError("no hole was filled: " + reasons)
+    if report["filled"] == 0:  # nothing failed: there was nothing to fill
+        raise HoleFillApp.HoleFillError("no hole was filled: the mesh has no holes")
     doc.openTransaction("Fill mesh holes")
     try:
         feature = doc.addObject("Mesh::Feature", name or (source.Name + "_filled"))

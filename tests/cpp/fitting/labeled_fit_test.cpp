@@ -393,6 +393,9 @@ TEST(LabeledFit, AFitThatMissesTheDataSaysSo) {
   const LabeledFitResult clean = fitLabeled(region, labels, o);
   EXPECT_GT(clean.fit.dataMax, 1e-3);
   EXPECT_FALSE(clean.metTolerance);
+  EXPECT_EQ(clean.outcome().status, Status::Warned);  // written, the data missed: the CLI exits 3
+  EXPECT_NE(clean.outcome().message.find("the data is missed"), std::string::npos) << clean.outcome().message;
+  EXPECT_NE(clean.toJson().find("\"status\":\"warned\""), std::string::npos);
   EXPECT_TRUE(warns(clean, "misses the region's data"));
   EXPECT_NE(clean.toJson().find("\"met_tolerance\":false"), std::string::npos);
   o.fit.controlU = o.fit.controlV = 12;

@@ -72,6 +72,14 @@ TEST(PointCloudFit, AFlaggedCloudIsFittedWithinTheTolerance) {
   EXPECT_TRUE(j.find("met_tolerance")->boolean);
   EXPECT_EQ(j.find("iterations")->array.size(), r.fit.history.size());
   EXPECT_EQ(j.find("warnings")->type, JsonValue::Type::Array);
+  EXPECT_EQ(j.find("status")->string, "ok");
+  // A tolerance no fit of this cloud meets in one iteration: written, the goal missed.
+  PointCloudFitOptions strict;
+  strict.fit.tolerance = 1e-9;
+  strict.fit.maxIterations = 1;
+  const Outcome missed = fitPointCloud(c, strict).outcome();
+  EXPECT_EQ(missed.status, Status::Warned);
+  EXPECT_NE(missed.message.find("tolerance NOT met"), std::string::npos) << missed.message;
 }
 
 // A bare cloud gets its boundary found and parameterized by chord length: the square's edge

@@ -28,6 +28,7 @@ TEST(GnurbsBuild, IsTheBuildTheExportAndTheMeasurementInOneCall) {
   EXPECT_TRUE(r.brep.valid);
   EXPECT_TRUE(r.sound());
   EXPECT_TRUE(r.warnings().empty());
+  EXPECT_EQ(r.outcome().status, Status::Ok);
   EXPECT_FALSE(r.fit);
   EXPECT_TRUE(r.cage.vertices.isApprox(cage.vertices));
   const GnurbsContinuity c = measureGnurbsContinuity(byHand);
@@ -37,6 +38,7 @@ TEST(GnurbsBuild, IsTheBuildTheExportAndTheMeasurementInOneCall) {
   ASSERT_NE(j.find("brep"), nullptr);
   EXPECT_TRUE(j.find("brep")->find("valid")->boolean);
   EXPECT_EQ(j.find("fit"), nullptr);  // no target, no fit
+  EXPECT_EQ(j.find("status")->string, "ok");
   EXPECT_EQ(static_cast<int>(j.find("patches")->number), static_cast<int>(byHand.patches.size()));
 }
 

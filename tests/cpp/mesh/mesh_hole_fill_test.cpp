@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/outcome.h"
+
 #include <cmath>
 
 #include "geometry/error.h"
@@ -67,6 +69,15 @@ std::vector<Eigen::Vector3i> gridWithoutTwoDiagonalSquares(const TriangleMesh& p
     if (!a && !b) kept.push_back(f);
   }
   return kept;
+}
+
+// The 6 x 6 grid plane with those two squares cut: two holes meeting at a singular vertex.
+TriangleMesh planeWithTwoDiagonalHoles() {
+  TriangleMesh m = samples::gridPlane(6, 6, 1.0);
+  const std::vector<Eigen::Vector3i> kept = gridWithoutTwoDiagonalSquares(m);
+  m.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (size_t i = 0; i < kept.size(); ++i) m.triangles.row(i) = kept[i].transpose();
+  return m;
 }
 
 }  // namespace
@@ -187,11 +198,7 @@ TEST(MeshHoleFill, TwoThousandVertexLoopsCapATube) {
 
 TEST(MeshHoleFill, TwoHolesSharingAVertexAreFilledSeparately) {
   // Two triangles of a grid removed so that their holes meet only at one vertex.
-  TriangleMesh plane = samples::gridPlane(6, 6, 1.0);
-  const std::vector<Eigen::Vector3i> kept = gridWithoutTwoDiagonalSquares(plane);
-  TriangleMesh m = plane;
-  m.triangles.resize(static_cast<Eigen::Index>(kept.size()), 3);
-  for (size_t i = 0; i < kept.size(); ++i) m.triangles.row(i) = kept[i].transpose();
+  const TriangleMesh m = planeWithTwoDiagonalHoles();
   const MeshHoleReport holes = findMeshHoles(m);
   EXPECT_EQ(holes.singularVertices, 1);
   MeshFillOptions o;
@@ -201,6 +208,29 @@ TEST(MeshHoleFill, TwoHolesSharingAVertexAreFilledSeparately) {
   for (const auto& f : r.fills)
     if (f.boundaryVertices == 4) EXPECT_NE(f.message.find("singular"), std::string::npos) << f.message;
   EXPECT_EQ(countBoundaryEdges(r.mesh), 24);  // the outer border only
+}
+
+// The outcome every door reads (geometry/outcome.h): holes left open warn and name them, none
+// filled fails with each hole's reason, all filled is ok.
+TEST(MeshHoleFill, OutcomeWarnsOnOpenHolesAndFailsWhenNoneIsFilled) {
+  const TriangleMesh m = planeWithTwoDiagonalHoles();
+  MeshFillOptions o;
+  o.maxBoundary = 10;  // the holes, not the outer border (24 edges)
+  const Outcome some = fillMeshHoles(m, o).outcome();
+  EXPECT_EQ(some.status, Status::Warned);  // the border stays open
+  EXPECT_EQ(some.faulting.size(), 1u);
+  EXPECT_EQ(exitCode(some), 3);
+  o.maxBoundary = 3;  // nothing fits
+  const MeshFillResult none = fillMeshHoles(m, o);
+  const Outcome failed = none.outcome();
+  EXPECT_EQ(failed.status, Status::Failed);
+  EXPECT_EQ(failed.stage, "fill");
+  EXPECT_NE(failed.message.find("no hole was filled: "), std::string::npos) << failed.message;
+  EXPECT_NE(failed.message.find("max-boundary"), std::string::npos) << failed.message;
+  EXPECT_EQ(exitCode(failed), 2);
+  EXPECT_NE(none.toJson().find("\"status\":\"failed\""), std::string::npos);
+  const Outcome closed = fillMeshHoles(samples::icosphere(1)).outcome();
+  EXPECT_EQ(closed.status, Status::Ok);
 }
 
 TEST(MeshHoleFill, BadInputsGiveClearErrors) {
