@@ -50,6 +50,7 @@
 #include "mesh/sample_meshes.h"
 #include "options/hole_fill_schema.h"
 #include "options/labeled_fit_schema.h"
+#include "options/mesh_fill_schema.h"
 #include "options/option_sets.h"
 
 using namespace holefill;
@@ -64,15 +65,15 @@ const char* kUsage =
     "                --angular-tolerance, --curvature-tolerance, --edge-continuity, --no-crease-detection, ...]\n"
     "                [--divide CURVE.brep]  two adjacent holes: the loop split by the one edge in CURVE.brep\n"
     "                (running from one loop vertex to another), filled as two faces sharing it\n"
-    "  holefill options [SET] [--json]   an option set's options (fill, labeled_fit): flag, default, unit, what it does\n"
+    "  holefill options [SET] [--json]   an option set's options (fill, labeled_fit, mesh_fill): flag, default, unit, what it does\n"
     "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
     "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
     "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
     "                [--isophote-direction x,y,z] [--direction x,y,z] [--scale-percentile LO,HI | --scale-range LO,HI]\n"
     "                [--symmetric auto|yes|no] [--normal-angle DEG] [--edges 0|1] [--legend 0|1] [--json]\n"
-    "  holefill mesh-fill MESH --out OUT [--max-boundary N] [--holes 0,3,..] [--no-refine] [--fair-iterations K]\n"
-    "                [--shape-order 0|1|2|3] [--triangulation angle|dihedral|auto] "
-    "                [--json]          MESH, OUT: .obj .off .ply .stl; holes as `holefill mesh-holes` numbers them\n"
+    "  holefill mesh-fill MESH --out OUT [--holes 0,3,..] [--json]   MESH, OUT: .obj .off .ply .stl; holes as\n"
+    "                `holefill mesh-holes` numbers them [the mesh fill's options, `holefill options mesh_fill`:\n"
+    "                --max-boundary, --triangulation angle|dihedral|auto, --no-refine, --shape-order, --fair-iterations, ...]\n"
     "  holefill mesh-holes MESH [--json]\n"
     "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine]\n"
     "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--merge-regular]\n"
@@ -119,10 +120,13 @@ Args parse(int argc, char** argv) {
   // Valueless flags: the verbs' own, and every Bool option's (its flag sets it).
   static const std::vector<std::string> flags = [] {
     std::vector<std::string> f = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--hold-labels"};  // --no-refine: mesh-fill and gnurbs
-    for (const auto& b : holeFillSchema())
-      if (b.field.kind == OptionKind::Bool) f.push_back(b.field.flag);
-    for (const auto& b : labeledFitSchema())
-      if (b.field.kind == OptionKind::Bool) f.push_back(b.field.flag);
+    const auto add = [&f](const auto& schema) {
+      for (const auto& b : schema)
+        if (b.field.kind == OptionKind::Bool && !b.field.flag.empty()) f.push_back(b.field.flag);
+    };
+    add(holeFillSchema());
+    add(labeledFitSchema());
+    add(meshFillSchema());
     return f;
   }();
   Args a;
@@ -361,15 +365,8 @@ int cmdMeshFill(const Args& a) {
   if (a.input.empty()) throw Error("mesh-fill: no input file");
   if (!a.has("--out")) throw Error("mesh-fill: --out OUT is required");
   MeshFillOptions o;
-  if (a.has("--max-boundary")) o.maxBoundary = static_cast<int>(number(a.get("--max-boundary"), "--max-boundary"));
+  applyFlags(meshFillSchema(), a, o);
   if (a.has("--holes")) o.holes = indexList(a.get("--holes"), "--holes");
-  if (a.has("--fair-iterations")) o.fairIterations = static_cast<int>(number(a.get("--fair-iterations"), "--fair-iterations"));
-  o.refine = !a.has("--no-refine");
-  if (a.has("--shape-order")) o.shape.order = static_cast<int>(number(a.get("--shape-order"), "--shape-order"));
-  const std::string triangulation = a.get("--triangulation", "angle");
-  if (triangulation == "dihedral") o.initial = MeshFillOptions::Triangulation::MinDihedral;
-  else if (triangulation == "auto") o.initial = MeshFillOptions::Triangulation::Auto;
-  else if (triangulation != "angle") throw Error("--triangulation must be angle, dihedral or auto, got '" + triangulation + "'");
   const MeshFillResult r = fillMeshHoles(readMesh(a.input), o);
   if (r.fills.empty()) throw Error("the mesh has no holes (it is closed); nothing written");
   const int code = exitCode(r.outcome());

@@ -176,9 +176,7 @@ MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& op
           }
           fairLaplacian(patch, ring, options.shape);
         }
-        BilateralOptions fairing = options.fairing;
-        if (options.fairIterations >= 0) fairing.iterations = options.fairIterations;
-        bilateralFair(patch, fairing);
+        bilateralFair(patch, options.fairing);  // fairing.iterations 0: off
         // Fairing moved vertices along normals: let smoothing and splits tidy up once more
         // (each step kept only if the worst triangle does not get worse).
         QualityOptions tidy = options.quality;

@@ -40,7 +40,6 @@ struct MeshFillOptions {
   enum class Triangulation { MinAngle, MinDihedral, Auto } initial = Triangulation::MinAngle;
   int maxDihedralLoop = 400;
   double creaseAngle = 60.0 * M_PI / 180;
-  int fairIterations = -1;               // −1: fairing.iterations; 0 switches fairing off
   bool keepBetterBare = true;            // a planar hole keeps its bare triangulation when that has the better
                                          // worst triangle (a removed sliver, a 3-vertex gap)
   MinAngleOptions triangulation;

@@ -41,6 +41,7 @@
 #include "mesh/mesh_io.h"
 #include "options/hole_fill_schema.h"
 #include "options/labeled_fit_schema.h"
+#include "options/mesh_fill_schema.h"
 #include "options/option_sets.h"
 
 namespace py = pybind11;
@@ -352,25 +353,10 @@ PYBIND11_MODULE(HoleFillApp, m) {
     return guarded([&] { return toJson(findMeshHoles(TriangleMesh{vertices, triangles})); });
   }, py::arg("vertices"), py::arg("triangles"), "Boundary loops of a triangle mesh (JSON: holes longest first, topology counts).");
   m.def("fillMeshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<int>& holes,
-                            int maxBoundary, bool refine, int fairIterations, int smoothIterations, double densityFactor,
-                            double closenessScale, double featureScale, const std::function<bool(double)>& progress,
-                            int shapeOrder, int shapePasses, bool alongNormals, const std::string& triangulation) {
+                            const py::dict& options, const std::function<bool(double)>& progress) {
     return guarded([&] {
-      MeshFillOptions o;
+      MeshFillOptions o = optionsFromDict(meshFillSchema(), options);
       o.holes = holes;
-      o.maxBoundary = maxBoundary;
-      o.refine = refine;
-      o.fairIterations = fairIterations;
-      if (smoothIterations >= 0) o.quality.smoothing.iterations = smoothIterations;
-      if (densityFactor > 0) o.refinement.densityFactor = densityFactor;
-      if (closenessScale > 0) o.fairing.closenessScale = closenessScale;
-      if (featureScale > 0) o.fairing.featureScale = featureScale;
-      if (shapeOrder >= 0) o.shape.order = shapeOrder;
-      if (shapePasses > 0) o.shape.passes = shapePasses;
-      o.shape.alongNormals = alongNormals;
-      if (triangulation == "dihedral") o.initial = MeshFillOptions::Triangulation::MinDihedral;
-      else if (triangulation == "auto") o.initial = MeshFillOptions::Triangulation::Auto;
-      else if (triangulation != "angle") throw Error("unknown triangulation '" + triangulation + "': use angle, dihedral or auto");
       if (progress) o.progress = [&](double f) { py::gil_scoped_acquire g; return progress(f); };
       MeshFillResult r;
       {
@@ -379,11 +365,10 @@ PYBIND11_MODULE(HoleFillApp, m) {
       }
       return py::make_tuple(r.mesh.vertices, r.mesh.triangles, r.toJson());
     });
-  }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("maxBoundary") = MeshFillOptions{}.maxBoundary,
-     py::arg("refine") = true, py::arg("fairIterations") = -1, py::arg("smoothIterations") = -1, py::arg("densityFactor") = 0.0,
-     py::arg("closenessScale") = 0.0, py::arg("featureScale") = 0.0, py::arg("progress") = nullptr,
-     py::arg("shapeOrder") = -1, py::arg("shapePasses") = 0, py::arg("alongNormals") = true, py::arg("triangulation") = "angle",
-     "Fill holes of a triangle mesh (Hu et al.): (vertices, triangles, report JSON); the input rows come first, unchanged.");
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("holes") = std::vector<int>{}, py::arg("options") = py::dict(),
+     py::arg("progress") = nullptr,
+     "Fill holes of a triangle mesh (Hu et al.), options {name: value} of optionSchema('mesh_fill'): (vertices, triangles, "
+     "report JSON); the input rows come first, unchanged.");
   m.def("measureMeshFill", [](const Eigen::MatrixX3d& inV, const Eigen::MatrixX3i& inT, const Eigen::MatrixX3d& outV,
                               const Eigen::MatrixX3i& outT, const Eigen::MatrixX3d& gtV, const Eigen::MatrixX3i& gtT) {
     return guarded([&] {
@@ -541,5 +526,4 @@ PYBIND11_MODULE(HoleFillApp, m) {
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },
         py::arg("name"), "OBJ text of a bundled sample cage.");
   m.attr("__version__") = "0.1.0";
-  m.attr("defaultMaxBoundary") = MeshFillOptions{}.maxBoundary;  // the doors' default, kept in the core
 }

@@ -1,5 +1,5 @@
-"""Headless FreeCAD test that every door offers the fill's and labeled fitting's options as the
-core's schemas declare them (HoleFillApp.optionSchema): the macro API's signatures carry their
+"""Headless FreeCAD test that every door offers the fill's, labeled fitting's and the mesh fill's
+options as the core's schemas declare them (HoleFillApp.optionSchema): the macro API's signatures carry their
 defaults, the Fill and LabeledFit objects' properties their defaults, choices and tooltips, the
 preferences start from them, and a value a schema refuses is refused by each door with the option
 named. (The CLI's side: tests/cli/options.sh.)"""
@@ -115,6 +115,22 @@ def test_labeled_fitting_follows_its_schema_in_every_door():
                          (dict(controlPoints=(3, 12)), "controlU must be a whole number between 4 and 200"),
                          (dict(tolerance=0.0), "tolerance must be positive")):
         fcharness.expect_error(lambda: HoleFill.fitLabeled(tri, [("N", [0, 1])], **kwargs), word)
+
+
+def test_mesh_fill_follows_its_schema():
+    fields = HoleFill.optionSchema("mesh_fill")
+    params = inspect.signature(HoleFill.fillMeshHoles).parameters
+    for name, f in fields.items():
+        assert params[name].default == f["default"], (name, params[name].default, f["default"])
+    assert inspect.signature(HoleFill.makeMeshFill).parameters["maxBoundary"].default == fields["maxBoundary"]["default"]
+    assert HoleFill.defaultMaxBoundary() == fields["maxBoundary"]["default"]
+    import Mesh
+    tri = Mesh.Mesh([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0), FreeCAD.Vector(0, 1, 0)])
+    for kwargs, word in ((dict(triangulation="delaunay"), "triangulation must be one of angle, dihedral, auto"),
+                         (dict(shapeOrder=4), "shapeOrder must be a whole number between 0 and 3"),
+                         (dict(densityFactor=0.0), "densityFactor must be positive"),
+                         (dict(maxBoundary=-1), "maxBoundary must be a whole number")):
+        fcharness.expect_error(lambda: HoleFill.fillMeshHoles(tri, **kwargs), word)
 
 
 fcharness.run(globals())

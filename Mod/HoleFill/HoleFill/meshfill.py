@@ -15,6 +15,7 @@ are the input's, in their order; only new points and facets follow. Hole numbers
 import json
 
 import HoleFillApp
+from HoleFill import optionSchema
 
 __all__ = ["meshHoles", "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole"]
 
@@ -64,21 +65,28 @@ def meshHoles(mesh):
     return out
 
 
+MESH_FILL_OPTIONS = optionSchema("mesh_fill")
+_MF = {name: f["default"] for name, f in MESH_FILL_OPTIONS.items()}
+
+
 def defaultMaxBoundary():
     """Holes with more boundary vertices stay open unless maxBoundary says otherwise (the core's default)."""
-    return HoleFillApp.defaultMaxBoundary
+    return _MF["maxBoundary"]
 
 
-def fillMeshHoles(mesh, holes=None, maxBoundary=None, refine=True, fairIterations=-1, smoothIterations=-1,
-                  densityFactor=0.0, closenessScale=0.0, featureScale=0.0, progress=None, shapeOrder=-1,
-                  triangulation="angle"):
+def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["refine"], fairIterations=_MF["fairIterations"],
+                  smoothIterations=_MF["smoothIterations"], densityFactor=_MF["densityFactor"], closenessScale=_MF["closenessScale"],
+                  featureScale=_MF["featureScale"], progress=None, shapeOrder=_MF["shapeOrder"], triangulation=_MF["triangulation"],
+                  shapePasses=_MF["shapePasses"], alongNormals=_MF["alongNormals"]):
     """Fill holes of `mesh`; returns (new Mesh.Mesh, report dict).
 
     holes: hole numbers (0-based, as meshHoles numbers them) or MeshHole dicts; None fills every
     fillable hole. Holes with more boundary vertices than maxBoundary stay open (e.g. the border
-    of an open scan); None: defaultMaxBoundary() (5000), 0: no limit. refine=False keeps the bare minimum-angle triangulation. fairIterations,
+    of an open scan); 0: no limit. refine=False keeps the bare minimum-angle triangulation. fairIterations,
     smoothIterations, densityFactor (α), closenessScale and featureScale (σ_c, σ_s per local
-    density) override the defaults when given (≥ 0, > 0). progress(fraction) -> False cancels.
+    density), shapePasses and alongNormals: the shape and fairing steps (0 iterations: off).
+    The defaults are the core's (optionSchema("mesh_fill"), as `holefill options mesh_fill` lists
+    them). progress(fraction) -> False cancels.
     shapeOrder: 0 flat (the paper's placement), 1 membrane, 2 thin plate (default), 3 minimum
     variation. triangulation: "angle" (the paper's minimum-angle ear cutting, default; better
     across creases), "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes)
@@ -91,17 +99,18 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=None, refine=True, fairIteration
     indices = [int(h["index"]) if isinstance(h, dict) else int(h) for h in (holes or [])]
     if holes is not None and not indices:
         raise HoleFillApp.HoleFillError("no hole selected: pass hole numbers, or holes=None for all")
-    if maxBoundary is None:
-        maxBoundary = defaultMaxBoundary()
-    nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, int(maxBoundary), bool(refine), int(fairIterations),
-                                               int(smoothIterations), float(densityFactor), float(closenessScale),
-                                               float(featureScale), progress, shapeOrder=int(shapeOrder),
-                                               triangulation=str(triangulation))
+    if maxBoundary is None:  # documents and macros of earlier versions: the default
+        maxBoundary = _MF["maxBoundary"]
+    options = dict(maxBoundary=int(maxBoundary), refine=bool(refine), fairIterations=int(fairIterations),
+                   smoothIterations=int(smoothIterations), densityFactor=float(densityFactor), closenessScale=float(closenessScale),
+                   featureScale=float(featureScale), shapeOrder=int(shapeOrder), triangulation=str(triangulation),
+                   shapePasses=int(shapePasses), alongNormals=bool(alongNormals))
+    nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, options, progress)
     from HoleFill import raiseOnFailure
     return _mesh(nv, nt), raiseOnFailure(json.loads(report), "mesh fill")
 
 
-def makeMeshFill(source, holes=None, maxBoundary=None, name=None, **options):
+def makeMeshFill(source, holes=None, maxBoundary=_MF["maxBoundary"], name=None, **options):
     """Fill `source` (a Mesh feature) into a new Mesh::Feature of the same document, in one undo
     transaction; the source is left as it is. Returns the new feature; the fill's report is in
     its read-only property HoleFillReport (JSON text)."""

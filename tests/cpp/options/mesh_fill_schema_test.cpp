@@ -1,0 +1,42 @@
+#include <gtest/gtest.h>
+
+#include "geometry/error.h"
+#include "options/mesh_fill_schema.h"
+#include "schema_checks.h"
+
+using namespace holefill;
+
+// Each option set through the schema lands where the mesh fill reads it, and reads back.
+TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
+  const auto& s = meshFillSchema();
+  MeshFillOptions o;
+  const std::vector<std::pair<std::string, std::string>> values = {
+      {"maxBoundary", "300"},    {"triangulation", "dihedral"}, {"refine", "false"},        {"densityFactor", "2"},
+      {"shapeOrder", "3"},       {"shapePasses", "2"},          {"alongNormals", "false"},  {"smoothIterations", "0"},
+      {"fairIterations", "0"},   {"closenessScale", "1.5"},     {"featureScale", "0.25"}};
+  ASSERT_EQ(values.size(), s.size()) << "a field without a case here";
+  for (const auto& [name, text] : values) setOption(s, o, name, text);
+  EXPECT_EQ(o.maxBoundary, 300);
+  EXPECT_EQ(o.initial, MeshFillOptions::Triangulation::MinDihedral);
+  EXPECT_FALSE(o.refine);
+  EXPECT_EQ(o.refinement.densityFactor, 2);
+  EXPECT_EQ(o.shape.order, 3);
+  EXPECT_EQ(o.shape.passes, 2);
+  EXPECT_FALSE(o.shape.alongNormals);
+  EXPECT_EQ(o.quality.smoothing.iterations, 0);
+  EXPECT_EQ(o.fairing.iterations, 0);
+  EXPECT_EQ(o.fairing.closenessScale, 1.5);
+  EXPECT_EQ(o.fairing.featureScale, 0.25);
+  for (size_t k = 0; k < s.size(); ++k) EXPECT_EQ(s[k].get(o), values[k].second) << s[k].field.name;
+}
+
+TEST(MeshFillSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
+  const auto& s = meshFillSchema();
+  expectWellFormedSchema(s);
+  const MeshFillOptions d;
+  EXPECT_EQ(s[0].get(d), std::to_string(d.maxBoundary));
+  EXPECT_EQ(s[1].get(d), "angle");
+  MeshFillOptions o;
+  EXPECT_THROW(setOption(s, o, "shapeOrder", "4"), Error);
+  EXPECT_THROW(setOption(s, o, "triangulation", "delaunay"), Error);
+}
