@@ -11,13 +11,12 @@ using namespace holefill;
 TEST(HoleFillSchema, EachOptionReachesTheFieldTheFillReads) {
   const auto& s = holeFillSchema();
   HoleFillOptions o;
-  const std::vector<std::pair<std::string, std::string>> values = {
+  const OptionValues values = {
       {"method", "mvc"},        {"continuity", "G2"},        {"tolerance", "0.002"},          {"angularTolerance", "0.01"},
       {"curvatureTolerance", "0.2"}, {"maxControlPoints", "600"}, {"edgeContinuity", "Edge5=G0,Edge7=G1"},
       {"detectCreases", "false"}, {"modelAccuracy", "false"}, {"weights", "/tmp/u.pt"}, {"computeVolume", "true"},
       {"checkModel", "true"}};
-  ASSERT_EQ(values.size(), s.size()) << "a field without a case here";
-  for (const auto& [name, text] : values) setOption(s, o, name, text);
+  setEveryOption(s, o, values);
   EXPECT_EQ(o.method, ParamMethod::MeanValue);
   EXPECT_EQ(o.continuity, Continuity::G2);
   EXPECT_EQ(o.tolerance, 0.002);
@@ -30,7 +29,7 @@ TEST(HoleFillSchema, EachOptionReachesTheFieldTheFillReads) {
   EXPECT_EQ(o.parameterization.uvtranWeights, "/tmp/u.pt");
   EXPECT_TRUE(o.computeVolume);
   EXPECT_TRUE(o.checkModel);
-  for (size_t k = 0; k < s.size(); ++k) EXPECT_EQ(s[k].get(o), values[k].second) << s[k].field.name;
+  expectEveryOptionReadsBack(s, o, values);
   setOption(s, o, "edgeContinuity", "");
   EXPECT_TRUE(o.edgeContinuity.empty());
 }

@@ -10,13 +10,12 @@ using namespace holefill;
 TEST(LabeledFitSchema, EachOptionReachesTheFieldTheFitReads) {
   const auto& s = labeledFitSchema();
   LabeledFitOptions o;
-  const std::vector<std::pair<std::string, std::string>> values = {
+  const OptionValues values = {
       {"controlU", "10"},   {"controlV", "8"},         {"maxControl", "30"},       {"tolerance", "0.002"},
       {"extension", "G1"},  {"margin", "2"},           {"reach", "0.1"},           {"fairness", "0.5"},
       {"isocurves", "paper"}, {"meshFairness", "0.01"}, {"smoothing", "1e-05"},   {"framePlacement", "2"},
       {"releaseDepth", "-1"}, {"relaxLabels", "false"}};
-  ASSERT_EQ(values.size(), s.size()) << "a field without a case here";
-  for (const auto& [name, text] : values) setOption(s, o, name, text);
+  setEveryOption(s, o, values);
   EXPECT_EQ(o.fit.controlU, 10);
   EXPECT_EQ(o.fit.controlV, 8);
   EXPECT_EQ(o.maxControl, 30);
@@ -33,7 +32,7 @@ TEST(LabeledFitSchema, EachOptionReachesTheFieldTheFitReads) {
   EXPECT_EQ(o.parameterization.framePlacement, 2);
   EXPECT_EQ(o.parameterization.releaseDepth, -1);
   EXPECT_FALSE(o.relaxLabels);
-  for (size_t k = 0; k < s.size(); ++k) EXPECT_EQ(s[k].get(o), values[k].second) << s[k].field.name;
+  expectEveryOptionReadsBack(s, o, values);
   EXPECT_NO_THROW(checkLabeledFitOptions(o));  // a continuation may carry the paper's fairness terms
   setOption(s, o, "extension", "none");
   EXPECT_FALSE(o.extend);

@@ -10,12 +10,11 @@ using namespace holefill;
 TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
   const auto& s = meshFillSchema();
   MeshFillOptions o;
-  const std::vector<std::pair<std::string, std::string>> values = {
+  const OptionValues values = {
       {"maxBoundary", "300"},    {"triangulation", "dihedral"}, {"refine", "false"},        {"densityFactor", "2"},
       {"shapeOrder", "3"},       {"shapePasses", "2"},          {"alongNormals", "false"},  {"smoothIterations", "0"},
       {"fairIterations", "0"},   {"closenessScale", "1.5"},     {"featureScale", "0.25"}};
-  ASSERT_EQ(values.size(), s.size()) << "a field without a case here";
-  for (const auto& [name, text] : values) setOption(s, o, name, text);
+  setEveryOption(s, o, values);
   EXPECT_EQ(o.maxBoundary, 300);
   EXPECT_EQ(o.initial, MeshFillOptions::Triangulation::MinDihedral);
   EXPECT_FALSE(o.refine);
@@ -27,7 +26,7 @@ TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
   EXPECT_EQ(o.fairing.iterations, 0);
   EXPECT_EQ(o.fairing.closenessScale, 1.5);
   EXPECT_EQ(o.fairing.featureScale, 0.25);
-  for (size_t k = 0; k < s.size(); ++k) EXPECT_EQ(s[k].get(o), values[k].second) << s[k].field.name;
+  expectEveryOptionReadsBack(s, o, values);
 }
 
 TEST(MeshFillSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
