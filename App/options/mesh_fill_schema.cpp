@@ -48,8 +48,8 @@ const OptionSchema<MeshFillOptions>& meshFillSchema() {
         triangulationOption(),
         boolOption<O>(refine, [](O& o) -> bool& { return o.refine; }),
         numberOption<O>(field("densityFactor", "--density-factor", "relative",
-                              "α of the refinement: a triangle is split while its edges are α times longer than the boundary's "
-                              "spacing there", 0, INFINITY, true),
+                              "α of the refinement: a triangle is split while α times the distance from its centroid to a corner "
+                              "exceeds the spacing there (√2 matches the surrounding mesh; larger: denser)", 0, INFINITY, true),
                         [](O& o) -> double& { return o.refinement.densityFactor; }),
         integerOption<O>(field("shapeOrder", "--shape-order", "",
                                "the shape the new vertices are placed on first: 0 flat (the paper's), 1 membrane, 2 thin plate, "
