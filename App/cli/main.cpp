@@ -48,6 +48,7 @@
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
 #include "mesh/sample_meshes.h"
+#include "options/gnurbs_build_schema.h"
 #include "options/hole_fill_schema.h"
 #include "options/labeled_fit_schema.h"
 #include "options/mesh_fill_schema.h"
@@ -65,7 +66,7 @@ const char* kUsage =
     "                --angular-tolerance, --curvature-tolerance, --edge-continuity, --no-crease-detection, ...]\n"
     "                [--divide CURVE.brep]  two adjacent holes: the loop split by the one edge in CURVE.brep\n"
     "                (running from one loop vertex to another), filled as two faces sharing it\n"
-    "  holefill options [SET] [--json]   an option set's options (fill, labeled_fit, mesh_fill): flag, default, unit, what it does\n"
+    "  holefill options [SET] [--json]   an option set's options (fill, labeled_fit, mesh_fill, gnurbs): flag, default, unit, what it does\n"
     "  holefill render FILE --out PNG [--mode zebra|curvature|shaded] [--quantity mean|gauss|max|min|direction]\n"
     "                [--size WxH] [--view iso|top|bottom|front|back|left|right|dx,dy,dz] [--faces 1,2,..]\n"
     "                [--stripes N] [--stripe-width W] [--stripe-angle DEG] [--stripe-mode reflection|isophote]\n"
@@ -75,10 +76,10 @@ const char* kUsage =
     "                `holefill mesh-holes` numbers them [the mesh fill's options, `holefill options mesh_fill`:\n"
     "                --max-boundary, --triangulation angle|dihedral|auto, --no-refine, --shape-order, --fair-iterations, ...]\n"
     "  holefill mesh-holes MESH [--json]\n"
-    "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json] [--no-refine]\n"
-    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--fit-rounds K] [--cage-out FITTED.obj] [--merge-regular]\n"
-    "                [--max-valence N] [--json]\n"
-    "                G² surface over a quad cage (EPs of valence above N, 24, refused; 0: no limit); '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
+    "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json]\n"
+    "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--cage-out FITTED.obj] [--json] [the G-NURBS options,\n"
+    "                `holefill options gnurbs`: --no-refine, --max-valence, --solve fair|stepwise, --merge-regular, --fit-rounds]\n"
+    "                G² surface over a quad cage; '# sharp i j', '# knot i j d', '# anchor i x y z' lines in the OBJ\n"
     "                (1-based); EDGES.json [[i,j],..], ANCHORS.json [[i,x,y,z],..]; writes OUT and OUT's .faces.json;\n"
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--untrimmed-out S.brep]\n"
@@ -127,6 +128,7 @@ Args parse(int argc, char** argv) {
     add(holeFillSchema());
     add(labeledFitSchema());
     add(meshFillSchema());
+    add(gnurbsBuildSchema());
     return f;
   }();
   Args a;
@@ -418,14 +420,7 @@ int cmdGnurbs(const Args& a) {
   if (a.has("--sharp")) addSharpEdgesFromJson(cage, readFileBytes(a.get("--sharp"), 1 << 26), a.get("--sharp"));
   if (a.has("--anchors")) addAnchorsFromJson(cage, readFileBytes(a.get("--anchors"), 1 << 26), a.get("--anchors"));
   GnurbsBuildOptions o;
-  o.surface.refineWhenNeeded = !a.has("--no-refine");
-  o.brep.mergeRegular = a.has("--merge-regular");
-  if (a.has("--max-valence")) {
-    const double m = number(a.get("--max-valence"), "--max-valence");
-    if (!(m >= 0) || m != std::floor(m)) throw Error("--max-valence must be a whole number, 0 for no limit");
-    o.surface.maxValence = static_cast<int>(m);
-  }
-  if (a.has("--fit-rounds")) o.fit.iterations = static_cast<int>(number(a.get("--fit-rounds"), "--fit-rounds"));
+  applyFlags(gnurbsBuildSchema(), a, o);
   if (a.has("--cage-out") && !a.has("--fit")) throw Error("gnurbs: --cage-out needs --fit (the cage is only changed by fitting)");
   std::optional<Eigen::MatrixX3d> target;
   if (a.has("--fit")) target = readPoints(a.get("--fit"));

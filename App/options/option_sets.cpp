@@ -1,18 +1,20 @@
 #include "options/option_sets.h"
 
 #include "geometry/error.h"
+#include "options/gnurbs_build_schema.h"
 #include "options/hole_fill_schema.h"
 #include "options/labeled_fit_schema.h"
 #include "options/mesh_fill_schema.h"
 
 namespace holefill {
 
-std::vector<std::string> optionSetNames() { return {"fill", "labeled_fit", "mesh_fill"}; }
+std::vector<std::string> optionSetNames() { return {"fill", "labeled_fit", "mesh_fill", "gnurbs"}; }
 
 std::string optionSetJson(const std::string& set) {
   if (set == "fill") return optionSchemaJson(holeFillSchema());
   if (set == "labeled_fit") return optionSchemaJson(labeledFitSchema());
   if (set == "mesh_fill") return optionSchemaJson(meshFillSchema());
+  if (set == "gnurbs") return optionSchemaJson(gnurbsBuildSchema());
   std::string list;
   for (const auto& n : optionSetNames()) list += (list.empty() ? "" : ", ") + n;
   throw Error("unknown option set '" + set + "': the sets are " + list);

@@ -39,6 +39,7 @@
 #include "mesh/fill_metrics.h"
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
+#include "options/gnurbs_build_schema.h"
 #include "options/hole_fill_schema.h"
 #include "options/labeled_fit_schema.h"
 #include "options/mesh_fill_schema.h"
@@ -397,8 +398,8 @@ PYBIND11_MODULE(HoleFillApp, m) {
      "BREP of a Catmull-Clark extraordinary-point hole ring (bicubic patches around a valence-N hole).");
   m.def("gnurbsSurface", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixXi& quads,
                             const std::vector<std::tuple<int, int, double>>& knots, const std::vector<std::pair<int, int>>& sharpEdges,
-                            const std::map<int, std::array<double, 3>>& anchors, bool refine, int numberBase, bool mergeRegular,
-                            const std::optional<Eigen::MatrixX3d>& target, int fitRounds) {
+                            const std::map<int, std::array<double, 3>>& anchors, const py::dict& options, int numberBase,
+                            const std::optional<Eigen::MatrixX3d>& target) {
     return guarded([&] {
       if (quads.cols() != 4) throw Error("quads must have 4 columns (one row per quad), got " + std::to_string(quads.cols()));
       QuadCage cage;
@@ -408,10 +409,7 @@ PYBIND11_MODULE(HoleFillApp, m) {
       for (const auto& [a, b, d] : knots) cage.setKnot(a, b, d);
       for (const auto& [a, b] : sharpEdges) cage.setSharp(a, b);
       for (const auto& [v, p] : anchors) cage.anchors[v] = Eigen::Vector3d(p[0], p[1], p[2]);
-      GnurbsBuildOptions o;
-      o.surface.refineWhenNeeded = refine;
-      o.brep.mergeRegular = mergeRegular;
-      o.fit.iterations = fitRounds;
+      const GnurbsBuildOptions o = optionsFromDict(gnurbsBuildSchema(), options);
       GnurbsBuildResult r;
       {
         py::gil_scoped_release release;
@@ -421,9 +419,9 @@ PYBIND11_MODULE(HoleFillApp, m) {
     });
   }, py::arg("vertices"), py::arg("quads"), py::arg("knots") = std::vector<std::tuple<int, int, double>>{},
      py::arg("sharpEdges") = std::vector<std::pair<int, int>>{}, py::arg("anchors") = std::map<int, std::array<double, 3>>{},
-     py::arg("refine") = true, py::arg("numberBase") = 0, py::arg("mergeRegular") = false, py::arg("target") = std::nullopt,
-     py::arg("fitRounds") = GnurbsFitOptions{}.iterations,
-     "G² G-NURBS surface over a quad cage (0-based indices), fitted to `target` points first when given (in fitRounds rounds): (BREP text of the shell, faces sidecar JSON, report JSON, the cage's vertices as built: fitted, or as given).");
+     py::arg("options") = py::dict(), py::arg("numberBase") = 0, py::arg("target") = std::nullopt,
+     "G² G-NURBS surface over a quad cage (0-based indices), options {name: value} of optionSchema('gnurbs'), fitted to `target` "
+     "points first when given: (BREP text of the shell, faces sidecar JSON, report JSON, the cage's vertices as built: fitted, or as given).");
   m.def("readCage", [](const std::string& path) {
     return guarded([&] {
       const QuadCage c = readCage(path);

@@ -133,4 +133,15 @@ def test_mesh_fill_follows_its_schema():
         fcharness.expect_error(lambda: HoleFill.fillMeshHoles(tri, **kwargs), word)
 
 
+def test_gnurbs_follows_its_schema():
+    fields = HoleFill.optionSchema("gnurbs")
+    params = inspect.signature(HoleFill.gnurbsSurface).parameters
+    for name, f in fields.items():
+        assert params[name].default == f["default"], (name, params[name].default, f["default"])
+    cage = HoleFill.sampleCage("cage_valence5")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], solve="greedy"),
+                           "solve must be one of fair, stepwise")
+    fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], maxValence=4), "valence")
+
+
 fcharness.run(globals())

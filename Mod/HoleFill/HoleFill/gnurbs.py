@@ -15,6 +15,7 @@ import json
 from functools import partial
 
 import HoleFillApp
+from HoleFill import optionSchema, optionTip
 from HoleFill.transaction import ensureProperty
 
 __all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature", "cageShell", "importCage",
@@ -28,8 +29,12 @@ def _shape(brep):
     return s
 
 
-def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refine=True, mergeRegular=False, target=None,
-                  fitRounds=None):
+GNURBS_OPTIONS = optionSchema("gnurbs")
+_GN = {name: f["default"] for name, f in GNURBS_OPTIONS.items()}
+
+
+def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refine=_GN["refine"], mergeRegular=_GN["mergeRegular"],
+                  target=None, fitRounds=_GN["fitRounds"], maxValence=_GN["maxValence"], solve=_GN["solve"]):
     """The G² surface over the cage: (Part.Shape shell, report dict). The report holds the
     construction's diagnostics (extraordinary_points, refinements and why, constraint_residual,
     warnings), the continuity reached (g1/g2 on spoke edges and elsewhere), the B-rep checks, and
@@ -37,8 +42,10 @@ def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refi
     refine=False refuses cages that need a Catmull-Clark step instead of refining them.
     mergeRegular=True merges rectangles of regular faces into one C² B-spline face each (the
     report's "faces" then lists a merged face's "control_faces").
+    maxValence: EPs of higher valence are refused (0: no limit); solve: "fair" or "stepwise" (the
+    paper's steps) for each EP's 1-ring. The defaults are the core's (optionSchema("gnurbs")).
     target: points (N×3, or a Points/Mesh object's points) to fit the cage to first, in fitRounds
-    rounds (None: the core's); the report then holds "fit" (d_max_percent, d_avg_percent of the
+    rounds; the report then holds "fit" (d_max_percent, d_avg_percent of the
     target's diagonal, ...) and "cage_vertices_fitted", the moved cage vertices."""
     import numpy as np
     v = np.asarray(vertices, dtype=float).reshape(-1, 3)
@@ -48,13 +55,13 @@ def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refi
     k = [(int(a), int(b), float(d)) for a, b, d in (knots or [])]
     s = [(int(a), int(b)) for a, b in sharpEdges]
     anc = {int(i): tuple(float(c) for c in p) for i, p in (anchors or {}).items()}
+    options = dict(refine=bool(refine), mergeRegular=bool(mergeRegular), fitRounds=int(fitRounds), maxValence=int(maxValence),
+                   solve=str(solve))
     extra = {}
     if target is not None:
         from HoleFill.pointcloud import _points
         extra["target"] = _points(target)
-        if fitRounds is not None:
-            extra["fitRounds"] = int(fitRounds)
-    brep, sidecar, report, fitted = HoleFillApp.gnurbsSurface(v, q, k, s, anc, bool(refine), 0, bool(mergeRegular), **extra)
+    brep, sidecar, report, fitted = HoleFillApp.gnurbsSurface(v, q, k, s, anc, options, 0, **extra)
     rep = json.loads(report)
     if target is not None:
         rep["cage_vertices_fitted"] = fitted
@@ -217,7 +224,7 @@ class GnurbsFeature:
         add("App::PropertyStringList", "SharpEdges", "G-NURBS", "Crease edges as 'i-j' (cage vertices, 0-based)")
         add("App::PropertyStringList", "Anchors", "G-NURBS", "Anchors as 'i: x y z' at sharp extraordinary points")
         add("App::PropertyStringList", "Knots", "G-NURBS", "Knot intervals as 'i-j: d' (default 1)")
-        add("App::PropertyBool", "Refine", "G-NURBS", "Refine the cage once when its EPs are too close")
+        add("App::PropertyBool", "Refine", "G-NURBS", optionTip(GNURBS_OPTIONS["refine"]))
         for name, doc in (("Report", "construction and continuity report (JSON)"), ("Status", "ok, or the warnings")):
             add("App::PropertyString", name, "Report", doc)
             obj.setEditorMode(name, 1)
