@@ -1,5 +1,7 @@
 #include "options/hole_fill_schema.h"
 
+#include <cmath>
+
 #include "brep/edge_continuity.h"
 
 namespace holefill {
@@ -39,52 +41,38 @@ OptionBinding<O> edgeContinuityOption() {
           }};
 }
 
-OptionField number(const char* name, const char* flag, const char* unit, const char* doc, double minimum, bool excluded) {
-  OptionField f{name, flag, OptionKind::Number, unit, doc};
-  f.minimum = minimum;
-  f.minimumExcluded = excluded;
-  return f;
-}
-
-OptionField boolean(const char* name, const char* flag, bool flagSets, const char* doc) {
-  OptionField f{name, flag, OptionKind::Bool, "", doc};
-  f.flagSets = flagSets;
-  return f;
-}
-
 }  // namespace
 
 const OptionSchema<HoleFillOptions>& holeFillSchema() {
   static const OptionSchema<O> s = [] {
-    OptionField poles{"maxControlPoints", "--max-control-points", OptionKind::Integer, "poles",
-                      "the most poles the solver's refinement may reach (a cubic patch has 16 at least)"};
-    poles.minimum = 16;
     return OptionSchema<O>{
         methodOption(),
         continuityOption(),
-        numberOption<O>(number("tolerance", "--tolerance", "model units",
-                               "G0 tolerance: the largest gap between the face and the hole's edges (0: 1e-6 of the hole's size)", 0, false),
+        numberOption<O>(rangedField("tolerance", "--tolerance", "model units",
+                               "G0 tolerance: the largest gap between the face and the hole's edges (0: 1e-6 of the hole's size)", 0, INFINITY, false),
                         [](O& o) -> double& { return o.tolerance; }),
-        numberOption<O>(number("angularTolerance", "--angular-tolerance", "radians",
-                               "G1 tolerance: the largest angle between the face's and its neighbours' normals along the edges", 0, true),
+        numberOption<O>(rangedField("angularTolerance", "--angular-tolerance", "radians",
+                               "G1 tolerance: the largest angle between the face's and its neighbours' normals along the edges", 0, INFINITY, true),
                         [](O& o) -> double& { return o.angularTolerance; }),
-        numberOption<O>(number("curvatureTolerance", "--curvature-tolerance", "relative",
-                               "G2 tolerance: the largest difference of normal curvature across the edges, relative to the larger", 0, true),
+        numberOption<O>(rangedField("curvatureTolerance", "--curvature-tolerance", "relative",
+                               "G2 tolerance: the largest difference of normal curvature across the edges, relative to the larger", 0, INFINITY, true),
                         [](O& o) -> double& { return o.curvatureTolerance; }),
-        integerOption<O>(poles, [](O& o) -> int& { return o.solver.maxControlPoints; }),
+        integerOption<O>(rangedField("maxControlPoints", "--max-control-points", "poles",
+                                     "the most poles the solver's refinement may reach (a cubic patch has 16 at least)", 16),
+                         [](O& o) -> int& { return o.solver.maxControlPoints; }),
         edgeContinuityOption(),
-        boolOption<O>(boolean("detectCreases", "--no-crease-detection", false,
+        boolOption<O>(flagField("detectCreases", "--no-crease-detection", false,
                               "ask G0 of the edges where the loop's corners show the model was sharp"),
                       [](O& o) -> bool& { return o.edges.detectCreases; }),
-        boolOption<O>(boolean("modelAccuracy", "--no-model-accuracy", false,
+        boolOption<O>(flagField("modelAccuracy", "--no-model-accuracy", false,
                               "judge each edge no stricter than the model is there (its own tolerance, the angle its neighbour meets it at)"),
                       [](O& o) -> bool& { return o.modelAccuracy; }),
         textOption<O>(OptionField{"weights", "--weights", OptionKind::Text, "",
                                   "UVTran's weights file (.pt, from holefill train uvtran) for the uvtran method; empty: the shipped one"},
                       [](O& o) -> std::string& { return o.parameterization.uvtranWeights; }),
-        boolOption<O>(boolean("computeVolume", "--volume", true, "also the volume of a closed result (a whole-model integration)"),
+        boolOption<O>(flagField("computeVolume", "--volume", true, "also the volume of a closed result (a whole-model integration)"),
                       [](O& o) -> bool& { return o.computeVolume; }),
-        boolOption<O>(boolean("checkModel", "--check-model", true, "also list every face of the input that BRepCheck finds invalid"),
+        boolOption<O>(flagField("checkModel", "--check-model", true, "also list every face of the input that BRepCheck finds invalid"),
                       [](O& o) -> bool& { return o.checkModel; }),
     };
   }();

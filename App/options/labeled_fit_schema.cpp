@@ -8,20 +8,6 @@ namespace {
 
 using O = LabeledFitOptions;
 
-OptionField field(const char* name, const char* flag, const char* unit, const char* doc, double minimum = -INFINITY,
-                  double maximum = INFINITY, bool excluded = false) {
-  OptionField f{name, flag, OptionKind::Number, unit, doc};
-  f.minimum = minimum;
-  f.maximum = maximum;
-  f.minimumExcluded = excluded;
-  return f;
-}
-
-OptionBinding<O> choice(OptionField f, std::function<std::string(const O&)> get, std::function<void(O&, const std::string&)> set) {
-  f.kind = OptionKind::Choice;
-  return {f, std::move(get), [f, set](O& o, const std::string& t) { set(o, checkOptionChoice(f, t)); }};
-}
-
 }  // namespace
 
 const OptionSchema<LabeledFitOptions>& labeledFitSchema() {
@@ -34,41 +20,40 @@ const OptionSchema<LabeledFitOptions>& labeledFitSchema() {
                           "the continuation's fairness along the new grid lines (grid) or the paper's k-th differences along "
                           "the boundary and labeled isocurves (paper)",
                           {"grid", "paper"}};
-    OptionField relax{"relaxLabels", "--hold-labels", OptionKind::Bool, "",
-                      "where the labeled map's fit misses the tolerance or has weak control points, fit over the region's free "
-                      "flattening turned as the labels say, if that is sound"};
-    relax.flagSets = false;
+    const OptionField relax = flagField("relaxLabels", "--hold-labels", false,
+                                        "where the labeled map's fit misses the tolerance or has weak control points, fit over the "
+                                        "region's free flattening turned as the labels say, if that is sound");
     return OptionSchema<O>{
-        integerOption<O>(field("controlU", "", "control points", "control points along u to start from (cubic, at least 4)", 4, 200),
+        integerOption<O>(rangedField("controlU", "", "control points", "control points along u to start from (cubic, at least 4)", 4, 200),
                          [](O& o) -> int& { return o.fit.controlU; }),
-        integerOption<O>(field("controlV", "", "control points", "control points along v to start from (cubic, at least 4)", 4, 200),
+        integerOption<O>(rangedField("controlV", "", "control points", "control points along v to start from (cubic, at least 4)", 4, 200),
                          [](O& o) -> int& { return o.fit.controlV; }),
-        integerOption<O>(field("maxControl", "--max-ctrl", "control points",
+        integerOption<O>(rangedField("maxControl", "--max-ctrl", "control points",
                                "control points are refined up to this many per direction while the data max exceeds the tolerance "
                                "(40 at most where scan noise could be the miss; 0: exactly the start's)",
                                0, 200),
                          [](O& o) -> int& { return o.maxControl; }),
-        numberOption<O>(field("tolerance", "--tolerance", "of the diagonal", "the data max that ends the refinement", 0, INFINITY, true),
+        numberOption<O>(rangedField("tolerance", "--tolerance", "of the diagonal", "the data max that ends the refinement", 0, INFINITY, true),
                         [](O& o) -> double& { return o.tolerance; }),
-        choice(extension, [](const O& o) { return extensionName(o); }, [](O& o, const std::string& t) { setExtensionByName(o, t); }),
-        integerOption<O>(field("margin", "--margin", "grid layers", "grid layers added around the domain", 0, 50),
+        choiceOption<O>(extension, [](const O& o) { return extensionName(o); }, [](O& o, const std::string& t) { setExtensionByName(o, t); }),
+        integerOption<O>(rangedField("margin", "--margin", "grid layers", "grid layers added around the domain", 0, 50),
                          [](O& o) -> int& { return o.extension.marginLayers; }),
-        numberOption<O>(field("reach", "--reach", "of the domain's larger side",
+        numberOption<O>(rangedField("reach", "--reach", "of the domain's larger side",
                               "how far the untrimmed surface reaches past the domain (0: to the domain)", 0, 10),
                         [](O& o) -> double& { return o.reach; }),
-        numberOption<O>(field("fairness", "--fairness", "relative", "isocurve fairness of the continuation, against its polyharmonic energy", 0),
+        numberOption<O>(rangedField("fairness", "--fairness", "relative", "isocurve fairness of the continuation, against its polyharmonic energy", 0),
                         [](O& o) -> double& { return o.extension.fairness; }),
-        choice(isocurves, [](const O& o) { return std::string(o.extension.paperIsocurves ? "paper" : "grid"); },
+        choiceOption<O>(isocurves, [](const O& o) { return std::string(o.extension.paperIsocurves ? "paper" : "grid"); },
                [](O& o, const std::string& t) { o.extension.paperIsocurves = t == "paper"; }),
-        numberOption<O>(field("meshFairness", "--mesh-fairness", "relative",
+        numberOption<O>(rangedField("meshFairness", "--mesh-fairness", "relative",
                               "the paper's E_Mesh: how evenly the continuation's triangles are distorted from their neighbours (0: off)", 0),
                         [](O& o) -> double& { return o.extension.meshFairness; }),
-        numberOption<O>(field("smoothing", "--smoothing", "relative", "thin-plate term of the fit, against its data term", 0),
+        numberOption<O>(rangedField("smoothing", "--smoothing", "relative", "thin-plate term of the fit, against its data term", 0),
                         [](O& o) -> double& { return o.fit.smoothing; }),
-        numberOption<O>(field("framePlacement", "--frame-placement", "relative",
+        numberOption<O>(rangedField("framePlacement", "--frame-placement", "relative",
                               "how firmly labeled vertices keep the guiding frame's placement along their sides", 0),
                         [](O& o) -> double& { return o.parameterization.framePlacement; }),
-        numberOption<O>(field("releaseDepth", "--release-depth", "of the side's chord",
+        numberOption<O>(rangedField("releaseDepth", "--release-depth", "of the side's chord",
                               "labeled vertices deeper than this inside their side's line, past a sharp turn, are left free "
                               "(negative: every labeled vertex held)"),
                         [](O& o) -> double& { return o.parameterization.releaseDepth; }),

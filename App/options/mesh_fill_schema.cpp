@@ -8,15 +8,6 @@ namespace {
 
 using O = MeshFillOptions;
 
-OptionField field(const char* name, const char* flag, const char* unit, const char* doc, double minimum, double maximum = INFINITY,
-                  bool excluded = false) {
-  OptionField f{name, flag, OptionKind::Number, unit, doc};
-  f.minimum = minimum;
-  f.maximum = maximum;
-  f.minimumExcluded = excluded;
-  return f;
-}
-
 OptionBinding<O> triangulationOption() {
   OptionField f{"triangulation", "--triangulation", OptionKind::Choice, "",
                 "the initial triangulation: the paper's minimum-angle ear cutting (angle; better across creases), Liepa's "
@@ -37,35 +28,34 @@ OptionBinding<O> triangulationOption() {
 
 const OptionSchema<MeshFillOptions>& meshFillSchema() {
   static const OptionSchema<O> s = [] {
-    OptionField refine{"refine", "--no-refine", OptionKind::Bool, "",
-                       "refine the new triangles to the surrounding density (off: the bare initial triangulation)"};
-    refine.flagSets = false;
+    const OptionField refine =
+        flagField("refine", "--no-refine", false, "refine the new triangles to the surrounding density (off: the bare initial triangulation)");
     OptionField normals{"alongNormals", "", OptionKind::Bool, "", "the shape placement moves vertices along their normals only"};
     return OptionSchema<O>{
-        integerOption<O>(field("maxBoundary", "--max-boundary", "boundary vertices",
+        integerOption<O>(rangedField("maxBoundary", "--max-boundary", "boundary vertices",
                                "holes with more boundary vertices stay open, e.g. the border of an open scan (0: no limit)", 0, 2e9),
                          [](O& o) -> int& { return o.maxBoundary; }),
         triangulationOption(),
         boolOption<O>(refine, [](O& o) -> bool& { return o.refine; }),
-        numberOption<O>(field("densityFactor", "--density-factor", "relative",
+        numberOption<O>(rangedField("densityFactor", "--density-factor", "relative",
                               "α of the refinement: a triangle is split while α times the distance from its centroid to a corner "
                               "exceeds the spacing there (√2 matches the surrounding mesh; larger: denser)", 0, INFINITY, true),
                         [](O& o) -> double& { return o.refinement.densityFactor; }),
-        integerOption<O>(field("shapeOrder", "--shape-order", "",
+        integerOption<O>(rangedField("shapeOrder", "--shape-order", "",
                                "the shape the new vertices are placed on first: 0 flat (the paper's), 1 membrane, 2 thin plate, "
                                "3 minimum variation", 0, 3),
                          [](O& o) -> int& { return o.shape.order; }),
-        integerOption<O>(field("shapePasses", "--shape-passes", "passes", "solve, relax edges in the new shape, solve again ...", 1, 100),
+        integerOption<O>(rangedField("shapePasses", "--shape-passes", "passes", "solve, relax edges in the new shape, solve again ...", 1, 100),
                          [](O& o) -> int& { return o.shape.passes; }),
         boolOption<O>(normals, [](O& o) -> bool& { return o.shape.alongNormals; }),
-        integerOption<O>(field("smoothIterations", "--smooth-iterations", "sweeps",
+        integerOption<O>(rangedField("smoothIterations", "--smooth-iterations", "sweeps",
                                "tangential smoothing sweeps of the quality pass (0: off)", 0, 1000),
                          [](O& o) -> int& { return o.quality.smoothing.iterations; }),
-        integerOption<O>(field("fairIterations", "--fair-iterations", "iterations", "bilateral fairing iterations (0: off)", 0, 1000),
+        integerOption<O>(rangedField("fairIterations", "--fair-iterations", "iterations", "bilateral fairing iterations (0: off)", 0, 1000),
                          [](O& o) -> int& { return o.fairing.iterations; }),
-        numberOption<O>(field("closenessScale", "--closeness-scale", "of the local spacing", "σ_c of the bilateral filter", 0, INFINITY, true),
+        numberOption<O>(rangedField("closenessScale", "--closeness-scale", "of the local spacing", "σ_c of the bilateral filter", 0, INFINITY, true),
                         [](O& o) -> double& { return o.fairing.closenessScale; }),
-        numberOption<O>(field("featureScale", "--feature-scale", "of the local spacing", "σ_s of the bilateral filter", 0, INFINITY, true),
+        numberOption<O>(rangedField("featureScale", "--feature-scale", "of the local spacing", "σ_s of the bilateral filter", 0, INFINITY, true),
                         [](O& o) -> double& { return o.fairing.featureScale; }),
     };
   }();

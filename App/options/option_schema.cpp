@@ -83,6 +83,21 @@ const std::string& checkOptionChoice(const OptionField& f, const std::string& te
   throw Error(f.name + " must be one of " + list + ", got '" + text + "'");
 }
 
+OptionField rangedField(const char* name, const char* flag, const char* unit, const char* doc, double minimum, double maximum,
+                        bool minimumExcluded) {
+  OptionField f{name, flag, OptionKind::Number, unit, doc};
+  f.minimum = minimum;
+  f.maximum = maximum;
+  f.minimumExcluded = minimumExcluded;
+  return f;
+}
+
+OptionField flagField(const char* name, const char* flag, bool flagSets, const char* doc) {
+  OptionField f{name, flag, OptionKind::Bool, "", doc};
+  f.flagSets = flagSets;
+  return f;
+}
+
 [[noreturn]] void throwUnknownOption(const std::string& name, const std::vector<OptionField>& fields) {
   std::string list;
   for (const auto& f : fields) list += (list.empty() ? "" : ", ") + f.name;

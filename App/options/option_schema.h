@@ -77,7 +77,15 @@ void setOption(const OptionSchema<O>& s, O& o, const std::string& name, const st
   throwUnknownOption(name, optionFields(s));
 }
 
-// Bindings of the common kinds to a member reached by `at`.
+// Fields with a range ([minimum, maximum], the minimum excluded when asked; numberOption and
+// integerOption set the kind), and Bool fields whose bare CLI flag sets `flagSets`.
+OptionField rangedField(const char* name, const char* flag, const char* unit, const char* doc,
+                        double minimum = -std::numeric_limits<double>::infinity(),
+                        double maximum = std::numeric_limits<double>::infinity(), bool minimumExcluded = false);
+OptionField flagField(const char* name, const char* flag, bool flagSets, const char* doc);
+
+// Bindings of the common kinds to a member reached by `at`, and of a Choice to its own get/set
+// (the text is checked against the choices before `set` sees it).
 template <class O>
 OptionBinding<O> numberOption(OptionField f, std::function<double&(O&)> at) {
   f.kind = OptionKind::Number;
@@ -97,6 +105,12 @@ OptionBinding<O> boolOption(OptionField f, std::function<bool&(O&)> at) {
   f.kind = OptionKind::Bool;
   return {f, [at](const O& o) { O c = o; return std::string(at(c) ? "true" : "false"); },
           [f, at](O& o, const std::string& t) { at(o) = parseOptionBool(f, t); }};
+}
+
+template <class O>
+OptionBinding<O> choiceOption(OptionField f, std::function<std::string(const O&)> get, std::function<void(O&, const std::string&)> set) {
+  f.kind = OptionKind::Choice;
+  return {f, std::move(get), [f, set](O& o, const std::string& t) { set(o, checkOptionChoice(f, t)); }};
 }
 
 template <class O>
