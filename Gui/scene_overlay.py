@@ -8,6 +8,7 @@ import FreeCADGui
 def remove(prefix):
     if not FreeCAD.GuiUp or FreeCADGui.ActiveDocument is None:
         return
+    from pivy import coin  # noqa: F401 (FreeCAD 1.0 wraps the scene graph only once pivy is loaded)
     root = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
     for i in reversed(range(root.getNumChildren())):
         if root.getChild(i).getName().getString().startswith(prefix):

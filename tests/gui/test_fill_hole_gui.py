@@ -35,6 +35,7 @@ def click_button(button):
 
 
 def overlay_present(name):
+    from pivy import coin  # noqa: F401 (FreeCAD 1.0 wraps the scene graph only once pivy is loaded)
     root = FreeCADGui.ActiveDocument.ActiveView.getSceneGraph()
     return any(root.getChild(i).getName().getString() == name for i in range(root.getNumChildren()))
 
