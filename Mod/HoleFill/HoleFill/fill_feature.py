@@ -7,7 +7,7 @@ from functools import partial
 import FreeCAD
 
 import HoleFill
-from HoleFill.transaction import ensureProperty
+from HoleFill.transaction import ParametricFeature, ensureProperty
 
 OUTPUTS = ("Face", "Sewn")  # what a Fill object holds: the patch alone, or the source with it sewn in
 
@@ -84,14 +84,8 @@ def followHole(shape, edges, signature, placement=None):
         ", ".join(edges), ", ".join(renamed))
 
 
-class FillFeature:
-    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
-    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
+class FillFeature(ParametricFeature):
     viewProvider = "FillViewProvider"
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.setupProperties(obj)
 
     def setupProperties(self, obj):
         add = partial(ensureProperty, obj)
@@ -127,9 +121,6 @@ class FillFeature:
                           ("G2", "max relative curvature deviation")):
             add("App::PropertyFloat", name, "Report", doc)
             obj.setEditorMode(name, 1)
-
-    def onDocumentRestored(self, obj):
-        self.setupProperties(obj)
 
     def execute(self, obj):
         src, subs = obj.Source if obj.Source else (None, [])
@@ -182,11 +173,6 @@ class FillFeature:
         this object's: its next recompute reuses it instead of reading the model again."""
         self._prepared = (edges if edges == 1 else tuple(edges), shape, hole)
 
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
 
 
 _FILL = {name: f["default"] for name, f in HoleFill.FILL_OPTIONS.items()}

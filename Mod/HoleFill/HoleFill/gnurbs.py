@@ -16,7 +16,7 @@ from functools import partial
 
 import HoleFillApp
 from HoleFill import optionSchema, optionTip
-from HoleFill.transaction import ensureProperty
+from HoleFill.transaction import ParametricFeature, ensureProperty
 
 __all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature", "cageShell", "importCage",
            "extraordinaryPoints"]
@@ -205,17 +205,10 @@ def _orientConsistently(quads):
     return out
 
 
-class GnurbsFeature:
+class GnurbsFeature(ParametricFeature):
     """A Part::FeaturePython whose Shape is the G² surface over its Source's quad faces, rebuilt
     whenever the source changes. SharpEdges and Anchors refer to cage vertices (0-based) as
     cageFromShape numbers them."""
-    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
-    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
-    viewProvider = None
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.setupProperties(obj)
 
     def setupProperties(self, obj):
         add = partial(ensureProperty, obj)
@@ -231,9 +224,6 @@ class GnurbsFeature:
         for name, doc in (("G1", "max normal angle across spoke edges (rad)"), ("G2", "max relative curvature jump across spoke edges")):
             add("App::PropertyFloat", name, "Report", doc)
             obj.setEditorMode(name, 1)
-
-    def onDocumentRestored(self, obj):
-        self.setupProperties(obj)
 
     def execute(self, obj):
         if obj.Source is None or not hasattr(obj.Source, "Shape"):
@@ -257,11 +247,6 @@ class GnurbsFeature:
         obj.Status = "; ".join(report["warnings"]) or "ok"
         obj.Report = json.dumps(report)
 
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
 
 
 def makeGnurbs(source, sharpEdges=(), anchors=None, refine=True, name="GNurbs", knots=()):

@@ -15,7 +15,7 @@ from functools import partial
 
 import HoleFillApp
 from HoleFill import optionSchema, optionTip
-from HoleFill.transaction import ensureProperty
+from HoleFill.transaction import ParametricFeature, ensureProperty
 
 __all__ = ["fitLabeled", "boundaryLoop", "cornerSplits", "segmentsOf", "makeBoundaryLabels", "makeLabeledFit"]
 
@@ -155,17 +155,11 @@ def labelsJsonOf(loop, splits, labels):
     return json.dumps({"segments": segs})
 
 
-class BoundaryLabelsFeature:
+class BoundaryLabelsFeature(ParametricFeature):
     """A mesh region's boundary cut into segments labeled N/E/S/W (or unlabeled), shown as
     coloured polylines; what LabeledFit objects fit by. Changing Splits or Labels recomputes the
     fits that use it."""
-    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
-    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
     viewProvider = "LabelsViewProvider"
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.setupProperties(obj)
 
     def setupProperties(self, obj):
         add = partial(ensureProperty, obj)
@@ -177,9 +171,6 @@ class BoundaryLabelsFeature:
         add("App::PropertyString", "LabelsJson", "Labels", "The labeled segments as fitLabeled takes them")
         obj.setEditorMode("LabelsJson", 1)
         obj.setEditorMode("Loop", 1)
-
-    def onDocumentRestored(self, obj):
-        self.setupProperties(obj)
 
     def execute(self, obj):
         import FreeCAD
@@ -201,11 +192,6 @@ class BoundaryLabelsFeature:
         obj.Shape = Part.makeCompound(wires)
         obj.LabelsJson = labelsJsonOf(loop, obj.Splits, list(obj.Labels))
 
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
 
 
 def makeBoundaryLabels(meshObj, splits=None, labels=None, cornerAngle=35.0, name="BoundaryLabels"):
@@ -231,16 +217,9 @@ def makeBoundaryLabels(meshObj, splits=None, labels=None, cornerAngle=35.0, name
     return addParametric(meshObj.Document, "Label boundary", name, setup, "the boundary labels")
 
 
-class LabeledFitFeature:
+class LabeledFitFeature(ParametricFeature):
     """A trimmed B-spline face fitted to the labels' mesh region (fitLabeled); recomputes when the
     labels, the mesh or the options change. The untrimmed surface is kept in Untrimmed."""
-    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
-    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
-    viewProvider = None
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.setupProperties(obj)
 
     def setupProperties(self, obj):
         add = partial(ensureProperty, obj)
@@ -272,9 +251,6 @@ class LabeledFitFeature:
         for n in ("Untrimmed", "Report"):
             obj.setEditorMode(n, 1)
 
-    def onDocumentRestored(self, obj):
-        self.setupProperties(obj)
-
     def execute(self, obj):
         lab = obj.Labels
         if lab is None or not hasattr(lab, "LabelsJson") or lab.Source is None:
@@ -289,11 +265,6 @@ class LabeledFitFeature:
             rep.pop(k, None)
         obj.Report = json.dumps(rep)
 
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
 
 
 def makeLabeledFit(labelsObj, controlPoints=(_FIT["controlU"], _FIT["controlV"]), extension=_FIT["extension"], margin=_FIT["margin"],

@@ -19,6 +19,7 @@ model units. Errors raise HoleFillError.
 import json
 
 import HoleFillApp
+from HoleFill.transaction import ParametricFeature
 
 __all__ = ["parameterize", "fitPoints", "makePointCloudFit"]
 
@@ -112,16 +113,9 @@ def _sourcePoints(obj):
     raise HoleFillApp.HoleFillError("%s is neither a Points nor a Mesh object" % getattr(obj, "Label", obj))
 
 
-class PointCloudFitFeature:
+class PointCloudFitFeature(ParametricFeature):
     """A B-spline face fitted to a Points or Mesh object (fitPoints); recomputes when the source
     or the options change. Report holds the fit's numbers (JSON)."""
-    # The view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's own), attached from
-    # the Gui side when the object is made (HoleFillGui/view_attach.py): the App never imports the Gui.
-    viewProvider = None
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.setupProperties(obj)
 
     def setupProperties(self, obj):
         from functools import partial
@@ -139,9 +133,6 @@ class PointCloudFitFeature:
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         obj.setEditorMode("Report", 1)
 
-    def onDocumentRestored(self, obj):
-        self.setupProperties(obj)
-
     def execute(self, obj):
         if obj.Source is None:
             raise HoleFillApp.HoleFillError("the point-cloud fit has no source")
@@ -151,11 +142,6 @@ class PointCloudFitFeature:
         obj.Shape = face
         obj.Report = json.dumps({k: v for k, v in rep.items() if k not in ("uv", "errors", "cells", "boundary")})
 
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
 
 
 def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit",

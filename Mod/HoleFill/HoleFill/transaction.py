@@ -51,3 +51,30 @@ def ensureProperty(obj, kind, name, group, doc, default=None):
         obj.addProperty(kind, name, group, doc)
         if default is not None:
             setattr(obj, name, default)
+
+
+class ParametricFeature:
+    """What the proxy of every HoleFill document object shares: its properties are set up when it
+    is made and again when a saved document is restored (so properties added since appear in old
+    documents), and nothing of it is pickled (its state is in the properties; caches are rebuilt).
+    `viewProvider` names the view provider HoleFillGui gives it (view_provider.py; None: FreeCAD's
+    own), attached from the Gui side when the object is made (HoleFillGui/view_attach.py): the App
+    never imports the Gui."""
+
+    viewProvider = None
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setupProperties(obj)
+
+    def setupProperties(self, obj):
+        raise NotImplementedError
+
+    def onDocumentRestored(self, obj):
+        self.setupProperties(obj)
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
