@@ -274,15 +274,7 @@ int cmdFill(const Args& a) {
   o.copyModel = false;  // the model was read for this fill alone
   std::vector<HoleFillResult> results;
   if (a.has("--all-holes") || a.get("--hole") == "all") {
-    const size_t n = detectHoles(shape).holes.size();
-    if (n == 0) throw Error("the shape has no holes");
-    for (size_t i = 0; i < n; ++i) {
-      HoleFillResult r = fillHole(shape, 0, o);
-      results.push_back(r);
-      if (r.status == FillStatus::Failed || r.status == FillStatus::Cancelled) break;
-      shape = r.shape;
-      if (detectHoles(shape).holes.empty()) break;
-    }
+    results = fillHoles(shape, o);
   } else if (a.has("--edges")) {
     results.push_back(fillHole(shape, edgeNames(a.get("--edges")), o));
   } else {

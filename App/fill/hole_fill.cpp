@@ -679,6 +679,23 @@ std::string toJson(const HoleDetectionResult& d) {
   return j.str();
 }
 
+std::vector<HoleFillResult> fillHoles(const TopoDS_Shape& model, const HoleFillOptions& options) {
+  const size_t n = detectHoles(model, options.detection).holes.size();
+  if (n == 0) throw Error("the shape has no holes");
+  HoleFillOptions o = options;
+  o.sew = true;
+  std::vector<HoleFillResult> results;
+  TopoDS_Shape shape = model;
+  for (size_t i = 0; i < n; ++i) {
+    results.push_back(fillHole(shape, 0, o));
+    const HoleFillResult& r = results.back();
+    if (r.status == FillStatus::Failed || r.status == FillStatus::Cancelled) break;
+    shape = r.shape;
+    if (detectHoles(shape, options.detection).holes.empty()) break;
+  }
+  return results;
+}
+
 Outcome outcome(const HoleFillResult& r) {
   Outcome o;
   o.status = r.status == FillStatus::Ok                ? Status::Ok

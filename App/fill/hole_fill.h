@@ -147,6 +147,11 @@ struct FillCache {
 HoleFillResult fillHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleFillOptions& options = {});
 // The hole by 0-based index in detectHoles(model).holes.
 HoleFillResult fillHole(const TopoDS_Shape& model, int holeIndex, const HoleFillOptions& options = {});
+// Every hole of `model`, one after the other, each filled into the model the one before returned
+// (faces filled earlier are the neighbours of later holes, so options.sew is taken as true); the
+// last result's shape is the model with all of them. Stops at the first fill that fails or is
+// cancelled (its result is the last one). Throws Error for a model without holes.
+std::vector<HoleFillResult> fillHoles(const TopoDS_Shape& model, const HoleFillOptions& options = {});
 // A hole already found (or assembled, as fillAdjacentHoles does) whose edges and supports belong
 // to `work`. With options.sew the new pcurves go onto those edges and the face is sewn into
 // `work`: it must be the caller's private copy. `elapsed` (seconds already spent finding the

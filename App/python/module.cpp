@@ -202,6 +202,19 @@ PYBIND11_MODULE(HoleFillApp, m) {
            "fill's option set (optionSchema('fill')); those left out keep their defaults.")
       .def("computed", [](const PreparedHole& h) { return py::make_tuple(h.cache().samplings, h.cache().parameterizations); },
            "(boundary samplings, parameterizations) computed so far; the rest came from the kept ones.");
+  m.def("fillHoles", [](const std::string& brep, const py::dict& options, const std::function<bool(double)>& progress) {
+    return guarded([&] {
+      HoleFillOptions o = optionsFromDict(holeFillSchema(), options);
+      o.progress = progress;
+      const std::vector<HoleFillResult> all = fillHoles(shapeFromBrepString(brep), o);
+      py::list reports;
+      for (const HoleFillResult& r : all) reports.append(toJson(r));
+      const TopoDS_Shape& last = all.back().shape;
+      return py::make_tuple(py::bytes(last.IsNull() ? "" : shapeToBrepString(last)), reports);
+    });
+  }, py::arg("brep"), py::arg("options") = py::dict(), py::arg("progress") = std::function<bool(double)>(),
+     "Every hole, one after the other into the model the one before returned: (BREP of the model with all of them, "
+     "[report JSON per hole]); it stops at the first fill that fails.");
   m.def("fillAdjacentHoles", &fillAdjacent, py::arg("brep"), py::arg("edges"), py::arg("divider"), py::arg("options") = py::dict(),
         py::arg("progress") = std::function<bool(double)>(),
         "Split the hole holding the given edges by the one edge in `divider` (BREP) and fill both sides as two "

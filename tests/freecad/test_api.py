@@ -256,6 +256,17 @@ def test_a_prepared_hole_handed_to_make_fill_is_not_read_again_and_change_fill_i
         FreeCAD.closeDocument(doc.Name)
 
 
+def test_fill_holes_closes_every_hole_in_turn():
+    sheet = load("sheet_two_holes")
+    model, reports = HoleFill.fillHoles(sheet, continuity="G1")
+    assert len(reports) == 2 and all(r["status"] in ("ok", "tolerance_not_met") for r in reports), [r["status"] for r in reports]
+    assert sorted(r["corners"] for r in reports) == [4, 5]
+    assert model.isValid() and not HoleFill.findHoles(model), len(HoleFill.findHoles(model))
+    assert len(model.Faces) == len(sheet.Faces) + 2 and len(HoleFill.findHoles(sheet)) == 2  # the input untouched
+    fcharness.expect_error(lambda: HoleFill.fillHoles(load("closed_box")), "no holes")
+    fcharness.expect_error(lambda: HoleFill.fillHoles(sheet, continuity="G4"), "continuity must be one of")
+
+
 def test_fill_follows_its_hole_when_the_source_numbers_its_edges_anew():
     """A source re-imported or rebuilt may number its edges anew: the Fill's "Edge<k>" would then
     name an edge of another hole (here the bottom of an open box instead of its top). The Fill finds

@@ -21,7 +21,7 @@ def schema():
 def test_the_macro_apis_defaults_are_the_schemas():
     fields = schema()
     assert list(fields) == [f["name"] for f in __import__("json").loads(HoleFillApp.optionSchema("fill"))]
-    doors = {"fillHole": HoleFill.fillHole, "PreparedHole.fill": HoleFill.PreparedHole.fill,
+    doors = {"fillHole": HoleFill.fillHole, "fillHoles": HoleFill.fillHoles, "PreparedHole.fill": HoleFill.PreparedHole.fill,
              "fillAdjacentHoles": HoleFill.fillAdjacentHoles, "makeFill": HoleFill.makeFill,
              "fill_feature.makeFill": fill_feature.makeFill}
     seen = set()

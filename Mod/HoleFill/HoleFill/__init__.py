@@ -75,7 +75,7 @@ def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureToler
         o["weights"] = str(weights)
     return o
 
-__all__ = ["optionSchema", "optionTip", "FILL_OPTIONS", "findHoles", "fillHole", "prepareHole", "PreparedHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+__all__ = ["optionSchema", "optionTip", "FILL_OPTIONS", "findHoles", "fillHole", "fillHoles", "prepareHole", "PreparedHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
            "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
            "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints", "fitLabeled"]
@@ -228,6 +228,23 @@ def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity
     return PreparedHole(shape, hole).fill(method, continuity, tolerance, angularTolerance, curvatureTolerance,
                                           maxControlPoints, progress, sewn, edgeContinuity, detectCreases,
                                           modelAccuracy, weights)
+
+
+def fillHoles(shape, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
+              angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
+              maxControlPoints=_FILL["maxControlPoints"], progress=None, detectCreases=_FILL["detectCreases"],
+              modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
+    """Every hole of `shape`, one after the other, each filled into the model the one before
+    returned (as `holefill fill --hole all`): (Part.Shape with all of them sewn in, [report per
+    hole]). Options as in fillHole. A fill that fails raises HoleFillError naming its hole; the
+    shape is never modified."""
+    options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
+                           None, detectCreases, modelAccuracy, weights)
+    model, reports = HoleFillApp.fillHoles(_brep(shape), options, progress)
+    reports = [json.loads(r) for r in reports]
+    for k, r in enumerate(reports):
+        raiseOnFailure(r, "fill of hole %d of %d" % (k + 1, len(reports)))
+    return _shape(model), reports
 
 
 def fillAdjacentHoles(shape, hole, divider, method=_FILL["method"], continuity=_FILL["continuity"],

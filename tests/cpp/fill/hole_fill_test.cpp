@@ -380,3 +380,27 @@ TEST(HoleFill, PreparedHoleFilledInPlaceIsFilledOnce) {
   EXPECT_THROW(PreparedHole(model, 5), Error);
   EXPECT_THROW(PreparedHole(TopoDS_Shape(), std::vector<int>{1}), Error);
 }
+
+// Every hole, one after the other into the model the one before returned (holefill fill --hole
+// all, HoleFill.fillHoles): the sheet's two holes (N = 4 and 5) both closed, the result valid
+// with no hole left, the input untouched; a model without holes is refused by name.
+TEST(HoleFill, FillHolesClosesEveryHoleInTurn) {
+  const TopoDS_Shape sheet = samples::byName("sheet_two_holes");
+  TopTools_IndexedMapOfShape before;
+  TopExp::MapShapes(sheet, TopAbs_FACE, before);
+  HoleFillOptions o;
+  o.sew = false;  // taken as true: each fill is the next one's model
+  const std::vector<HoleFillResult> all = fillHoles(sheet, o);
+  ASSERT_EQ(all.size(), 2u);
+  for (const HoleFillResult& r : all) EXPECT_TRUE(r.status == FillStatus::Ok || r.status == FillStatus::ToleranceNotMet) << r.message;
+  EXPECT_EQ(all[0].hole.corners + all[1].hole.corners, 9);
+  EXPECT_TRUE(BRepCheck_Analyzer(all.back().shape).IsValid());
+  EXPECT_TRUE(detectHoles(all.back().shape).holes.empty());
+  TopTools_IndexedMapOfShape after;
+  TopExp::MapShapes(all.back().shape, TopAbs_FACE, after);
+  EXPECT_EQ(after.Extent(), before.Extent() + 2);
+  TopTools_IndexedMapOfShape still;
+  TopExp::MapShapes(sheet, TopAbs_FACE, still);
+  EXPECT_EQ(still.Extent(), before.Extent());
+  EXPECT_THROW(fillHoles(samples::byName("closed_box")), Error);
+}
