@@ -237,6 +237,8 @@ def test_a_prepared_hole_handed_to_make_fill_is_not_read_again_and_change_fill_i
         edges = [HoleFill.findHoles(src.Shape)[0].edges[0]]
         hole = HoleFill.prepareHole(src.Shape, edges)
         face, rep = hole.fill(continuity="G1")
+        other = HoleFill.prepareHole(load("sheet_two_holes"), 1)  # another model's hole
+        fcharness.expect_error(lambda: HoleFill.makeFill(src, edges, prepared=other), "is not the one")
         fill = HoleFill.makeFill(src, edges, continuity="G1", prepared=hole)
         assert fill.Proxy._prepared[2] is hole
         assert json.loads(fill.Report)["timings"] == rep["timings"], "the kept fill was solved again"

@@ -163,6 +163,7 @@ class PreparedHole:
     requests pays for the solve, build and check alone. The shape is never modified."""
 
     def __init__(self, shape, hole=1):
+        self.shape = shape  # what it was read from (a Fill handed this hole checks it is its source's)
         self.edges = _edgeIndices(shape, hole)
         self._prepared = HoleFillApp.PreparedHole(_brep(shape), self.edges)
 

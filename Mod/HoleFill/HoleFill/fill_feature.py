@@ -211,6 +211,12 @@ def changeFill(obj, source, edges, method=_FILL["method"], continuity=_FILL["con
 
 
 def _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared):
+    if prepared is not None:
+        asked = {int(e[4:]) if isinstance(e, str) else int(e) for e in edges}
+        kept = set(prepared.edges)
+        if not prepared.shape.isSame(source.Shape) or not (asked <= kept or kept <= asked):
+            raise HoleFill.HoleFillError("the prepared hole (edges %s) is not the one %s of %s name" % (
+                ", ".join("Edge%d" % e for e in sorted(kept)), ", ".join(str(e) for e in edges), source.Label))
     obj.Source = (source, list(edges))
     obj.Method = method
     obj.Continuity = continuity
