@@ -209,10 +209,9 @@ class FillTaskPanel:
 
     def prepared(self):
         """The hole of the current source and edges, read and found once."""
-        key = (self.source, tuple(self.edges))
-        if self.hole is None or self.hole[0] != key or not self.hole[1].isSame(self.source.Shape):
-            self.hole = (key, self.source.Shape, HoleFill.prepareHole(self.source.Shape, self.edges))
-        return self.hole[2]
+        if self.hole is None or not self.hole.isFor(self.source.Shape, self.edges):
+            self.hole = HoleFill.prepareHole(self.source.Shape, self.edges)
+        return self.hole
 
     def runPreview(self):
         """Fills the hole with the panel's settings and shows the face over the model (nothing is

@@ -40,7 +40,6 @@
 #include "geometry/atomic_file.h"
 #include "geometry/bspline_surface.h"
 #include "geometry/error.h"
-#include "geometry/json_reader.h"
 #include "geometry/json_writer.h"
 #include "geometry/supervised_child.h"
 #include "inspect/inspection_render.h"
@@ -120,15 +119,10 @@ struct Args {
 Args parse(int argc, char** argv) {
   // Valueless flags: the verbs' own, and every Bool option's (its flag sets it).
   static const std::vector<std::string> flags = [] {
-    std::vector<std::string> f = {"--json", "--all", "--all-holes", "--no-refine", "--merge-regular", "--thb", "--faces", "--hold-labels"};  // --no-refine: mesh-fill and gnurbs
-    const auto add = [&f](const auto& schema) {
-      for (const auto& b : schema)
-        if (b.field.kind == OptionKind::Bool && !b.field.flag.empty()) f.push_back(b.field.flag);
-    };
-    add(holeFillSchema());
-    add(labeledFitSchema());
-    add(meshFillSchema());
-    add(gnurbsBuildSchema());
+    std::vector<std::string> f = {"--json", "--all", "--all-holes", "--thb", "--faces"};
+    for (const auto& set : optionSetNames())
+      for (const OptionField& o : optionSet(set).fields)
+        if (o.kind == OptionKind::Bool && !o.flag.empty() && std::find(f.begin(), f.end(), o.flag) == f.end()) f.push_back(o.flag);
     return f;
   }();
   Args a;
@@ -612,16 +606,15 @@ int cmdOptions(const Args& a) {
   }
   for (const auto& set : sets) {
     std::printf("%s:\n", set.c_str());
-    for (const JsonValue& f : parseJson(optionSetJson(set)).array) {
-      const auto text = [&](const char* k) { return f.find(k)->string; };
-      const JsonValue& d = *f.find("default");
-      std::string value = d.type == JsonValue::Type::Number   ? formatOptionNumber(d.number)
-                          : d.type == JsonValue::Type::Bool ? (d.boolean ? "true" : "false")
-                                                            : "'" + d.string + "'";
-      std::string flag = text("flag").empty() ? "(no flag)" : text("flag");
-      if (text("kind") == "bool") value += std::string("; the flag sets ") + (f.find("flag_sets")->boolean ? "true" : "false");
-      else if (!text("unit").empty()) value += " " + text("unit");
-      std::printf("  %-24s %-22s default %s\n      %s\n", text("name").c_str(), flag.c_str(), value.c_str(), text("doc").c_str());
+    const OptionList l = optionSet(set);
+    for (size_t k = 0; k < l.fields.size(); ++k) {
+      const OptionField& f = l.fields[k];
+      const bool text = f.kind == OptionKind::Choice || f.kind == OptionKind::Text;
+      std::string value = text ? "'" + l.defaults[k] + "'" : l.defaults[k];
+      if (f.kind == OptionKind::Bool) value += std::string("; the flag sets ") + (f.flagSets ? "true" : "false");
+      else if (!f.unit.empty()) value += " " + f.unit;
+      std::printf("  %-24s %-22s default %s\n      %s\n", f.name.c_str(), f.flag.empty() ? "(no flag)" : f.flag.c_str(), value.c_str(),
+                  f.doc.c_str());
     }
   }
   return 0;

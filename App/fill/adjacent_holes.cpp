@@ -239,10 +239,7 @@ AdjacentFillResult fillAdjacentHoles(const TopoDS_Shape& model, const std::vecto
 Outcome outcome(const AdjacentFillResult& r) {
   const Outcome a = outcome(r.first), b = outcome(r.second);
   Outcome o = exitCode(a) == 2 || (exitCode(a) == 3 && exitCode(b) == 0) ? a : b;
-  o.status = r.status == FillStatus::Ok                ? Status::Ok
-             : r.status == FillStatus::ToleranceNotMet ? Status::Warned
-             : r.status == FillStatus::Cancelled       ? Status::Cancelled
-                                                       : Status::Failed;
+  o.status = toStatus(r.status);
   o.message = r.message;
   o.warnings = r.first.warnings;
   o.warnings.insert(o.warnings.end(), r.second.warnings.begin(), r.second.warnings.end());

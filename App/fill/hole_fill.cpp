@@ -696,12 +696,19 @@ std::vector<HoleFillResult> fillHoles(const TopoDS_Shape& model, const HoleFillO
   return results;
 }
 
+Status toStatus(FillStatus s) {
+  switch (s) {
+    case FillStatus::Ok: return Status::Ok;
+    case FillStatus::ToleranceNotMet: return Status::Warned;
+    case FillStatus::Cancelled: return Status::Cancelled;
+    case FillStatus::Failed: return Status::Failed;
+  }
+  return Status::Failed;
+}
+
 Outcome outcome(const HoleFillResult& r) {
   Outcome o;
-  o.status = r.status == FillStatus::Ok                ? Status::Ok
-             : r.status == FillStatus::ToleranceNotMet ? Status::Warned
-             : r.status == FillStatus::Cancelled       ? Status::Cancelled
-                                                       : Status::Failed;
+  o.status = toStatus(r.status);
   if (o.status == Status::Failed || o.status == Status::Cancelled) o.stage = toString(r.failedStage);
   o.message = r.message;
   o.warnings = r.warnings;

@@ -194,6 +194,7 @@ BSplineSurface uvtranProjectionSurface(const TopoDS_Shape& model, const std::vec
 
 std::string toJson(const HoleFillResult& r);
 // Ok, Warned (tolerance_not_met: the report's own, more precise name), Failed at its stage, Cancelled.
+Status toStatus(FillStatus s);
 Outcome outcome(const HoleFillResult& r);
 std::string toJson(const HoleDetectionResult& r);
 

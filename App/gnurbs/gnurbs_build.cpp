@@ -11,9 +11,8 @@ GnurbsBuildResult buildGnurbs(const QuadCage& cage, const GnurbsBuildOptions& o,
     GnurbsFitOptions fo = o.fit;
     fo.surface = o.surface;
     GnurbsFitResult f = fitGnurbs(cage, *target, fo);
-    r.cage = f.cage;
+    r.cage = std::move(f.cage);  // the cage and surface are held once, here; `fit` keeps the distances
     r.surface = std::move(f.surface);
-    f.surface = {};  // held once, above
     r.fit = std::move(f);
   } else {
     r.cage = cage;

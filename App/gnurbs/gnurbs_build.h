@@ -30,7 +30,7 @@ struct GnurbsBuildResult {
   G2GnurbsResult surface;
   GnurbsBrep brep;
   GnurbsContinuity continuity;
-  std::optional<GnurbsFitResult> fit;  // with a target: the fit's distances (its cage and surface are the ones above)
+  std::optional<GnurbsFitResult> fit;  // with a target: the fit's distances (its cage and surface moved to the ones above)
   double seconds = 0;                  // build (and fit) and B-rep, not the continuity measurement
   bool sound() const { return brep.valid && surface.warnings.empty(); }
   std::vector<std::string> warnings() const;  // the construction's, and the invalid shell's

@@ -104,7 +104,7 @@ OptionField flagField(const char* name, const char* flag, bool flagSets, const c
   throw Error("unknown option '" + name + "': the options are " + list);
 }
 
-std::string optionFieldsJson(const std::vector<OptionField>& fields, const std::vector<std::string>& defaults) {
+std::string OptionList::toJson() const {
   JsonWriter j;
   j.beginArray();
   for (size_t k = 0; k < fields.size(); ++k) {

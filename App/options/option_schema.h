@@ -47,25 +47,32 @@ int parseOptionInteger(const OptionField& f, const std::string& text);
 bool parseOptionBool(const OptionField& f, const std::string& text);
 const std::string& checkOptionChoice(const OptionField& f, const std::string& text);
 
-// The schema as JSON: [{"name", "flag", "kind", "unit", "doc", "choices", "minimum", "maximum",
-// "minimum_excluded", "flag_sets", "default"}, ...], the default typed (number, bool or string).
-std::string optionFieldsJson(const std::vector<OptionField>& fields, const std::vector<std::string>& defaults);
+// A schema's fields with their defaults (as text), free of the struct: what the doors list.
+struct OptionList {
+  std::vector<OptionField> fields;
+  std::vector<std::string> defaults;  // one per field
+  // [{"name", "flag", "kind", "unit", "doc", "choices", "minimum", "maximum", "minimum_excluded",
+  // "flag_sets", "default"}, ...], the default typed (number, bool or string).
+  std::string toJson() const;
+};
 
 [[noreturn]] void throwUnknownOption(const std::string& name, const std::vector<OptionField>& fields);
 
+// The defaults are read from a default-constructed O.
 template <class O>
-std::vector<OptionField> optionFields(const OptionSchema<O>& s) {
-  std::vector<OptionField> f;
-  for (const auto& b : s) f.push_back(b.field);
-  return f;
+OptionList optionList(const OptionSchema<O>& s) {
+  const O defaults{};
+  OptionList l;
+  for (const auto& b : s) {
+    l.fields.push_back(b.field);
+    l.defaults.push_back(b.get(defaults));
+  }
+  return l;
 }
 
 template <class O>
 std::string optionSchemaJson(const OptionSchema<O>& s) {
-  const O defaults{};
-  std::vector<std::string> values;
-  for (const auto& b : s) values.push_back(b.get(defaults));
-  return optionFieldsJson(optionFields(s), values);
+  return optionList(s).toJson();
 }
 
 // Sets the field named `name` (the API's spelling) from text. Throws Error for an unknown name
@@ -74,7 +81,7 @@ template <class O>
 void setOption(const OptionSchema<O>& s, O& o, const std::string& name, const std::string& text) {
   for (const auto& b : s)
     if (b.field.name == name) return b.set(o, text);
-  throwUnknownOption(name, optionFields(s));
+  throwUnknownOption(name, optionList(s).fields);
 }
 
 // Fields with a range ([minimum, maximum], the minimum excluded when asked; numberOption and
@@ -84,26 +91,27 @@ OptionField rangedField(const char* name, const char* flag, const char* unit, co
                         double maximum = std::numeric_limits<double>::infinity(), bool minimumExcluded = false);
 OptionField flagField(const char* name, const char* flag, bool flagSets, const char* doc);
 
-// Bindings of the common kinds to a member reached by `at`, and of a Choice to its own get/set
+// Bindings of the common kinds to a member reached by `at` (get reads through it, never writes),
+// and of a Choice to its own get/set
 // (the text is checked against the choices before `set` sees it).
 template <class O>
 OptionBinding<O> numberOption(OptionField f, std::function<double&(O&)> at) {
   f.kind = OptionKind::Number;
-  return {f, [at](const O& o) { O c = o; return formatOptionNumber(at(c)); },
+  return {f, [at](const O& o) { return formatOptionNumber(at(const_cast<O&>(o))); },
           [f, at](O& o, const std::string& t) { at(o) = parseOptionNumber(f, t); }};
 }
 
 template <class O>
 OptionBinding<O> integerOption(OptionField f, std::function<int&(O&)> at) {
   f.kind = OptionKind::Integer;
-  return {f, [at](const O& o) { O c = o; return std::to_string(at(c)); },
+  return {f, [at](const O& o) { return std::to_string(at(const_cast<O&>(o))); },
           [f, at](O& o, const std::string& t) { at(o) = parseOptionInteger(f, t); }};
 }
 
 template <class O>
 OptionBinding<O> boolOption(OptionField f, std::function<bool&(O&)> at) {
   f.kind = OptionKind::Bool;
-  return {f, [at](const O& o) { O c = o; return std::string(at(c) ? "true" : "false"); },
+  return {f, [at](const O& o) { return std::string(at(const_cast<O&>(o)) ? "true" : "false"); },
           [f, at](O& o, const std::string& t) { at(o) = parseOptionBool(f, t); }};
 }
 
@@ -116,7 +124,7 @@ OptionBinding<O> choiceOption(OptionField f, std::function<std::string(const O&)
 template <class O>
 OptionBinding<O> textOption(OptionField f, std::function<std::string&(O&)> at) {
   f.kind = OptionKind::Text;
-  return {f, [at](const O& o) { O c = o; return at(c); }, [at](O& o, const std::string& t) { at(o) = t; }};
+  return {f, [at](const O& o) { return at(const_cast<O&>(o)); }, [at](O& o, const std::string& t) { at(o) = t; }};
 }
 
 }  // namespace holefill

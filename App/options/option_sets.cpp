@@ -10,11 +10,13 @@ namespace holefill {
 
 std::vector<std::string> optionSetNames() { return {"fill", "labeled_fit", "mesh_fill", "gnurbs"}; }
 
-std::string optionSetJson(const std::string& set) {
-  if (set == "fill") return optionSchemaJson(holeFillSchema());
-  if (set == "labeled_fit") return optionSchemaJson(labeledFitSchema());
-  if (set == "mesh_fill") return optionSchemaJson(meshFillSchema());
-  if (set == "gnurbs") return optionSchemaJson(gnurbsBuildSchema());
+std::string optionSetJson(const std::string& set) { return optionSet(set).toJson(); }
+
+OptionList optionSet(const std::string& set) {
+  if (set == "fill") return optionList(holeFillSchema());
+  if (set == "labeled_fit") return optionList(labeledFitSchema());
+  if (set == "mesh_fill") return optionList(meshFillSchema());
+  if (set == "gnurbs") return optionList(gnurbsBuildSchema());
   std::string list;
   for (const auto& n : optionSetNames()) list += (list.empty() ? "" : ", ") + n;
   throw Error("unknown option set '" + set + "': the sets are " + list);

@@ -35,13 +35,19 @@ def optionSchema(set):
     return {f["name"]: f for f in json.loads(HoleFillApp.optionSchema(set))}
 
 
+def optionDefaults(fields):
+    """{name: default} of an optionSchema's fields: what the doors' signatures start from."""
+    return {name: f["default"] for name, f in fields.items()}
+
+
 def optionTip(field):
     """A field's tooltip: its doc, and its unit where it has one."""
     return field["doc"] + (" (%s)" % field["unit"] if field["unit"] else "")
 
 
 FILL_OPTIONS = optionSchema("fill")
-_FILL = {name: f["default"] for name, f in FILL_OPTIONS.items()}
+FILL_DEFAULTS = optionDefaults(FILL_OPTIONS)
+_FILL = FILL_DEFAULTS
 METHODS = tuple(FILL_OPTIONS["method"]["choices"])
 CONTINUITIES = tuple(FILL_OPTIONS["continuity"]["choices"])
 
@@ -59,6 +65,12 @@ def raiseOnFailure(report, what):
     return report
 
 
+def edgeContinuityEntries(edgeContinuity):
+    """{"Edge5": "G0", 7: "G1"} (names or 1-based indices) -> ["Edge5=G0", "Edge7=G1"], as the
+    core's edgeContinuity option and the Fill's EdgeContinuity property spell them."""
+    return ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in dict(edgeContinuity or {}).items()]
+
+
 def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
                  edgeContinuity=None, detectCreases=None, modelAccuracy=None, weights=None):
     """fillHole's keywords as the core's option dict (checked there, by the schema)."""
@@ -66,8 +78,7 @@ def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureToler
              angularTolerance=float(angularTolerance), curvatureTolerance=float(curvatureTolerance),
              maxControlPoints=int(maxControlPoints))
     if edgeContinuity:
-        o["edgeContinuity"] = ",".join("%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c)
-                                       for e, c in dict(edgeContinuity).items())
+        o["edgeContinuity"] = ",".join(edgeContinuityEntries(edgeContinuity))
     for name, value in (("detectCreases", detectCreases), ("modelAccuracy", modelAccuracy)):
         if value is not None:
             o[name] = bool(value)
@@ -156,6 +167,15 @@ def _edgeIndices(shape, hole):
     return out
 
 
+def _holeKey(hole):
+    """What a hole argument names, comparable: a number, or its edges."""
+    if isinstance(hole, int):
+        return hole
+    if isinstance(hole, dict):
+        return tuple(hole["edges"])
+    return tuple(hole)
+
+
 class PreparedHole:
     """A hole of a shape, read and found once and filled as often as asked (prepareHole): its
     boundary samples and parameterizations (UVTran's network, MVC's interior references) are kept
@@ -164,8 +184,13 @@ class PreparedHole:
 
     def __init__(self, shape, hole=1):
         self.shape = shape  # what it was read from (a Fill handed this hole checks it is its source's)
+        self.asked = _holeKey(hole)
         self.edges = _edgeIndices(shape, hole)
         self._prepared = HoleFillApp.PreparedHole(_brep(shape), self.edges)
+
+    def isFor(self, shape, hole):
+        """Whether this is the hole `hole` names of this very `shape` (a kept one can be reused)."""
+        return self.asked == _holeKey(hole) and self.shape.isSame(shape)
 
     def computed(self):
         """(boundary samplings, parameterizations) computed so far; the rest were reused."""

@@ -92,11 +92,11 @@ class FillFeature(ParametricFeature):
 
         add("App::PropertyLinkSub", "Source", "Fill", "Object and edges of the hole (one edge names its whole loop)")
         tip = {name: HoleFill.optionTip(f) for name, f in HoleFill.FILL_OPTIONS.items()}
-        default = {name: f["default"] for name, f in HoleFill.FILL_OPTIONS.items()}
+        default = HoleFill.FILL_DEFAULTS
         add("App::PropertyEnumeration", "Method", "Fill", tip["method"])
         if list(obj.getEnumerationsOfProperty("Method")) != list(HoleFill.METHODS):
             # New methods appear in documents saved by older versions; the chosen one is kept.
-            current = obj.Method if obj.getEnumerationsOfProperty("Method") else "auto"
+            current = obj.Method if obj.getEnumerationsOfProperty("Method") else default["method"]
             obj.Method = list(HoleFill.METHODS)
             obj.Method = current if current in HoleFill.METHODS else default["method"]
         add("App::PropertyEnumeration", "Continuity", "Fill", tip["continuity"])
@@ -160,9 +160,8 @@ class FillFeature(ParametricFeature):
         """The source's hole, prepared once while the source shape and the picked edges stay the
         same: a Preview that changes the method, continuity, tolerance or output reuses the model
         read, the hole found, its samples and parameterizations (HoleFill.PreparedHole). Not saved."""
-        key = edges if edges == 1 else tuple(edges)
         last = getattr(self, "_prepared", None)
-        if last is not None and last[0] == key and last[1].isSame(shape):
+        if last is not None and last[2].isFor(shape, edges):
             return last[2]
         hole = HoleFill.prepareHole(shape, edges)
         self.keepPrepared(shape, edges, hole)
@@ -174,8 +173,7 @@ class FillFeature(ParametricFeature):
         self._prepared = (edges if edges == 1 else tuple(edges), shape, hole)
 
 
-
-_FILL = {name: f["default"] for name, f in HoleFill.FILL_OPTIONS.items()}
+_FILL = HoleFill.FILL_DEFAULTS
 
 
 def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
@@ -224,6 +222,6 @@ def _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance
     obj.AngularTolerance = angularTolerance
     obj.Output = output
     obj.Weights = weights
-    obj.EdgeContinuity = ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in (edgeContinuity or {}).items()]
+    obj.EdgeContinuity = HoleFill.edgeContinuityEntries(edgeContinuity)
     if prepared is not None:  # a hole read and found for these edges already (the task panel's)
         obj.Proxy.keepPrepared(source.Shape, list(edges), prepared)

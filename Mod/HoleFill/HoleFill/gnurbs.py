@@ -15,7 +15,7 @@ import json
 from functools import partial
 
 import HoleFillApp
-from HoleFill import optionSchema, optionTip
+from HoleFill import optionDefaults, optionSchema, optionTip
 from HoleFill.transaction import ParametricFeature, ensureProperty
 
 __all__ = ["gnurbsSurface", "cageFromShape", "readCage", "sampleCage", "makeGnurbs", "GnurbsFeature", "cageShell", "importCage",
@@ -30,7 +30,7 @@ def _shape(brep):
 
 
 GNURBS_OPTIONS = optionSchema("gnurbs")
-_GN = {name: f["default"] for name, f in GNURBS_OPTIONS.items()}
+_GN = optionDefaults(GNURBS_OPTIONS)
 
 
 def gnurbsSurface(vertices, quads, knots=None, sharpEdges=(), anchors=None, refine=_GN["refine"], mergeRegular=_GN["mergeRegular"],

@@ -14,7 +14,7 @@ import json
 from functools import partial
 
 import HoleFillApp
-from HoleFill import optionSchema, optionTip
+from HoleFill import optionDefaults, optionSchema, optionTip
 from HoleFill.transaction import ParametricFeature, ensureProperty
 
 __all__ = ["fitLabeled", "boundaryLoop", "cornerSplits", "segmentsOf", "makeBoundaryLabels", "makeLabeledFit"]
@@ -29,7 +29,7 @@ def _labelsJson(labels):
 
 
 FIT_OPTIONS = optionSchema("labeled_fit")
-_FIT = {name: f["default"] for name, f in FIT_OPTIONS.items()}
+_FIT = optionDefaults(FIT_OPTIONS)
 # The LabeledFit object's properties and the options they hold.
 FIT_PROPERTIES = {"ControlPointsU": "controlU", "ControlPointsV": "controlV", "MaxControlPoints": "maxControl", "Tolerance": "tolerance",
                   "Extension": "extension", "Margin": "margin", "Reach": "reach", "Fairness": "fairness", "Isocurves": "isocurves",

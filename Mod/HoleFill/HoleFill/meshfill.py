@@ -15,7 +15,7 @@ are the input's, in their order; only new points and facets follow. Hole numbers
 import json
 
 import HoleFillApp
-from HoleFill import optionSchema
+from HoleFill import optionDefaults, optionSchema, raiseOnFailure
 
 __all__ = ["meshHoles", "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole"]
 
@@ -66,7 +66,7 @@ def meshHoles(mesh):
 
 
 MESH_FILL_OPTIONS = optionSchema("mesh_fill")
-_MF = {name: f["default"] for name, f in MESH_FILL_OPTIONS.items()}
+_MF = optionDefaults(MESH_FILL_OPTIONS)
 
 
 def defaultMaxBoundary():
@@ -106,7 +106,6 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["
                    featureScale=float(featureScale), shapeOrder=int(shapeOrder), triangulation=str(triangulation),
                    shapePasses=int(shapePasses), alongNormals=bool(alongNormals))
     nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, options, progress)
-    from HoleFill import raiseOnFailure
     return _mesh(nv, nt), raiseOnFailure(json.loads(report), "mesh fill")
 
 
