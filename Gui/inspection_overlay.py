@@ -73,21 +73,10 @@ def bounded_mesh(obj, faces, maxNormalAngle=2.0, what="Tessellating", maxVertice
     """HoleFill.inspectionMesh bounded by the view (or maxVertices) and INTERACTIVE_SECONDS, with a
     cancellable progress dialog; cancelling raises HoleFillError. A mesh that stopped at a bound
     carries stoppedByBudget and its warnings, which go to the report view."""
-    from PySide2 import QtCore, QtWidgets
-    dlg = QtWidgets.QProgressDialog("%s %s..." % (what, obj.Label), translate("HoleFill", "Cancel"), 0, 100, FreeCADGui.getMainWindow())
-    dlg.setWindowModality(QtCore.Qt.WindowModal)
-    dlg.setMinimumDuration(500)
-
-    def progress(f):
-        dlg.setValue(int(100 * f))
-        QtWidgets.QApplication.processEvents()
-        return not dlg.wasCanceled()
-
-    try:
+    from HoleFillGui import task_dialog
+    with task_dialog.progress_dialog("%s %s..." % (what, obj.Label), FreeCADGui.getMainWindow()) as progress:
         mesh = HoleFill.inspectionMesh(obj.Shape, faces, maxNormalAngle, maxVertices=maxVertices or view_vertex_budget(),
                                        timeLimit=INTERACTIVE_SECONDS, progress=progress)
-    finally:
-        dlg.close()
     for w in mesh["warnings"]:
         FreeCAD.Console.PrintWarning("HoleFill: %s: %s\n" % (obj.Label, w))
     return mesh

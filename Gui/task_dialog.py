@@ -1,6 +1,10 @@
-"""What the task panels' OK buttons share: the document object is made under a wait cursor,
+"""What the task panels share. Their OK buttons: the document object is made under a wait cursor,
 and when making it fails the panel's status line and the report view say why and the panel
-stays open (the make* functions leave the document as it was)."""
+stays open (the make* functions leave the document as it was). Their widgets: the status line
+(wrapped, so that it fits the Combo View), the "Show ..." toggles that redraw the preview, and
+the buttons, each with the object name the GUI tests find it by."""
+import contextlib
+
 import FreeCAD
 from PySide2 import QtCore, QtWidgets
 
@@ -18,3 +22,54 @@ def create(status, make):
         return None
     finally:
         QtWidgets.QApplication.restoreOverrideCursor()
+
+
+def status_line(name=None):
+    """The panel's status line: a label that wraps (long reports stay within a narrow Combo View)."""
+    label = QtWidgets.QLabel()
+    if name:
+        label.setObjectName(name)
+    label.setWordWrap(True)
+    return label
+
+
+def button(text, name, clicked):
+    """A push button named `name` (for the GUI tests) that calls `clicked`."""
+    b = QtWidgets.QPushButton(text)
+    b.setObjectName(name)
+    b.clicked.connect(clicked)
+    return b
+
+
+def show_toggles(layout, prefix, items, redraw):
+    """{key: checkbox} for (key, label) in `items`, each checked, named prefix + key, added to the
+    form layout `layout`, and calling redraw() when toggled."""
+    toggles = {}
+    for key, label in items:
+        c = QtWidgets.QCheckBox(label)
+        c.setObjectName(prefix + key)
+        c.setChecked(True)
+        c.toggled.connect(lambda *_: redraw())
+        layout.addRow(c)
+        toggles[key] = c
+    return toggles
+
+
+@contextlib.contextmanager
+def progress_dialog(text, parent):
+    """A modal progress dialog (shown after half a second) with Cancel, for the length of the
+    block; yields the progress callable the core takes: progress(fraction) -> False once the
+    user cancelled."""
+    dlg = QtWidgets.QProgressDialog(text, translate("HoleFill", "Cancel"), 0, 100, parent)
+    dlg.setWindowModality(QtCore.Qt.WindowModal)
+    dlg.setMinimumDuration(500)
+
+    def progress(f):
+        dlg.setValue(int(100 * f))
+        QtWidgets.QApplication.processEvents()
+        return not dlg.wasCanceled()
+
+    try:
+        yield progress
+    finally:
+        dlg.close()

@@ -221,25 +221,14 @@ class FillTaskPanel:
             self.report.setPlainText(translate("HoleFill", "No hole selected: click an edge of the hole first."))
             return False
         options, output = self.options(), self.output.currentText()
-        dlg = QtWidgets.QProgressDialog(translate("HoleFill", "Filling hole..."), translate("HoleFill", "Cancel"), 0, 100, self.form)
-        dlg.setWindowModality(QtCore.Qt.WindowModal)
-        dlg.setMinimumDuration(500)
-
-        def progress(f):
-            dlg.setValue(int(100 * f))
-            QtWidgets.QApplication.processEvents()
-            return not dlg.wasCanceled()
-
         try:
             # Sewn as the Fill will be, so that OK's recompute finds this very fill kept.
-            result = self.prepared().fill(progress=progress, sewn=output == "Sewn", **options)
-            face, report = result[0], result[-1]
+            with task_dialog.progress_dialog(translate("HoleFill", "Filling hole..."), self.form) as progress:
+                face, _, report = self.prepared().fill(progress=progress, sewn=output == "Sewn", **options)
         except HoleFill.HoleFillError as e:
             self.previewed = None
             self.report.setPlainText(translate("HoleFill", "Fill failed: %s") % e)
             return False
-        finally:
-            dlg.close()
         self.previewed = ((options, output), face, report)
         self.showReport(report)
         root = scene_overlay.placed_root(OVERLAY, self.source.getGlobalPlacement() if hasattr(self.source, "getGlobalPlacement")

@@ -84,21 +84,11 @@ class FitPanel:
         self.relax.setToolTip(optionTip(opts["relaxLabels"]))
         self.relax.setChecked(opts["relaxLabels"]["default"])
         layout.addRow(self.relax)
-        self.show = {}
-        for key, label in (("frame", translate("HoleFill", "Show the guiding frame")), ("extended", translate("HoleFill", "Show the extended mesh")), ("surface", translate("HoleFill", "Show the surface"))):
-            c = QtWidgets.QCheckBox(label)
-            c.setObjectName("HoleFillFitShow_" + key)
-            c.setChecked(True)
-            c.toggled.connect(lambda *_: self.draw())
-            layout.addRow(c)
-            self.show[key] = c
-        preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
-        preview.setObjectName("HoleFillFitPreview")
-        preview.clicked.connect(self.preview)
-        layout.addRow(preview)
-        self.status = QtWidgets.QLabel()
-        self.status.setObjectName("HoleFillFitStatus")
-        self.status.setWordWrap(True)
+        self.show = task_dialog.show_toggles(layout, "HoleFillFitShow_", (
+            ("frame", translate("HoleFill", "Show the guiding frame")), ("extended", translate("HoleFill", "Show the extended mesh")),
+            ("surface", translate("HoleFill", "Show the surface"))), self.draw)
+        layout.addRow(task_dialog.button(translate("HoleFill", "Preview"), "HoleFillFitPreview", self.preview))
+        self.status = task_dialog.status_line("HoleFillFitStatus")
         layout.addRow(self.status)
         self.result = None
         self.preview()
@@ -106,7 +96,7 @@ class FitPanel:
     def options(self):
         return dict(controlPoints=(self.ctrlU.value(), self.ctrlV.value()), extension=self.extension.currentText(),
                     margin=self.margin.value(), reach=self.reach.value(), relaxLabels=self.relax.isChecked(),
-                    tolerance=preferences.get("FitTolerance"), **{k: w.value() for k, w in self.weights.items()})
+                    relativeTolerance=preferences.get("FitTolerance"), **{k: w.value() for k, w in self.weights.items()})
 
     def preview(self):
         import HoleFill

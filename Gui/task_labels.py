@@ -11,7 +11,7 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFillGui import SelectionError, scene_overlay
+from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
 
@@ -71,18 +71,10 @@ class LabelPanel:
         self.angle.setRange(5, 175)
         self.angle.setValue(cornerAngle)
         row.addWidget(self.angle)
-        resplit = QtWidgets.QPushButton(translate("HoleFill", "Split at corners"))
-        resplit.setObjectName("HoleFillLabelResplit")
-        resplit.clicked.connect(self.splitAtCorners)
-        row.addWidget(resplit)
+        row.addWidget(task_dialog.button(translate("HoleFill", "Split at corners"), "HoleFillLabelResplit", self.splitAtCorners))
         layout.addLayout(row)
-        clear = QtWidgets.QPushButton(translate("HoleFill", "Clear labels"))
-        clear.setObjectName("HoleFillLabelClear")
-        clear.clicked.connect(self.clearLabels)
-        layout.addWidget(clear)
-        self.status = QtWidgets.QLabel()
-        self.status.setObjectName("HoleFillLabelStatus")
-        self.status.setWordWrap(True)
+        layout.addWidget(task_dialog.button(translate("HoleFill", "Clear labels"), "HoleFillLabelClear", self.clearLabels))
+        self.status = task_dialog.status_line("HoleFillLabelStatus")
         layout.addWidget(self.status)
         from pivy import coin
         self.view = FreeCADGui.ActiveDocument.ActiveView

@@ -9,7 +9,8 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from HoleFill import preferences
+from HoleFill import optionTip, preferences
+from HoleFill.pointcloud import POINT_FIT_OPTIONS
 from HoleFillGui import SelectionError, scene_overlay, task_dialog
 
 translate = FreeCAD.Qt.translate
@@ -50,8 +51,9 @@ class FitPanel:
         layout = QtWidgets.QFormLayout(self.form)
         self.method = QtWidgets.QComboBox()
         self.method.setObjectName("HoleFillPointFitMethod")
-        self.method.addItems(["shape", "bidgcn", "invdist", "uniform"])
-        self.method.setToolTip(translate("HoleFill", "bidgcn: the learned parameterizer; shape: shape-preserving (Floater); invdist, uniform: weights"))
+        self.method.addItems(POINT_FIT_OPTIONS["method"]["choices"])
+        self.method.setCurrentText(POINT_FIT_OPTIONS["method"]["default"])
+        self.method.setToolTip(optionTip(POINT_FIT_OPTIONS["method"]))
         layout.addRow(translate("HoleFill", "Parameterization:"), self.method)
         self.tolerance = QtWidgets.QDoubleSpinBox()
         self.tolerance.setObjectName("HoleFillPointFitTolerance")
@@ -59,38 +61,32 @@ class FitPanel:
         self.tolerance.setRange(1e-6, 1e6)
         self.tolerance.setValue(float("%.3g" % (preferences.get("FitTolerance") * self.diagonal)))
         self.tolerance.setSuffix(translate("HoleFill", " mm"))
+        self.tolerance.setToolTip(optionTip(POINT_FIT_OPTIONS["tolerance"]))
         layout.addRow(translate("HoleFill", "Tolerance:"), self.tolerance)
         self.degree = QtWidgets.QSpinBox()
         self.degree.setObjectName("HoleFillPointFitDegree")
-        self.degree.setRange(1, 7)
-        self.degree.setValue(3)
+        f = POINT_FIT_OPTIONS["degree"]
+        self.degree.setRange(int(f["minimum"]), int(f["maximum"]))
+        self.degree.setValue(int(f["default"]))
+        self.degree.setToolTip(optionTip(f))
         layout.addRow(translate("HoleFill", "Degree:"), self.degree)
         self.adaptive = QtWidgets.QCheckBox(translate("HoleFill", "Adaptive refinement (THB-splines)"))
         self.adaptive.setObjectName("HoleFillPointFitAdaptive")
-        self.adaptive.setChecked(True)
+        self.adaptive.setChecked(bool(POINT_FIT_OPTIONS["adaptive"]["default"]))
+        self.adaptive.setToolTip(optionTip(POINT_FIT_OPTIONS["adaptive"]))
         layout.addRow(self.adaptive)
-        self.show = {}
-        for key, label in (("surface", translate("HoleFill", "Show the surface")), ("cells", translate("HoleFill", "Show the hierarchical mesh")), ("errors", translate("HoleFill", "Show the point errors"))):
-            c = QtWidgets.QCheckBox(label)
-            c.setObjectName("HoleFillPointFitShow_" + key)
-            c.setChecked(True)
-            c.toggled.connect(lambda *_: self.draw())
-            layout.addRow(c)
-            self.show[key] = c
-        preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
-        preview.setObjectName("HoleFillPointFitPreview")
-        preview.clicked.connect(self.preview)
-        layout.addRow(preview)
-        self.status = QtWidgets.QLabel()
-        self.status.setObjectName("HoleFillPointFitStatus")
-        self.status.setWordWrap(True)
+        self.show = task_dialog.show_toggles(layout, "HoleFillPointFitShow_", (
+            ("surface", translate("HoleFill", "Show the surface")), ("cells", translate("HoleFill", "Show the hierarchical mesh")),
+            ("errors", translate("HoleFill", "Show the point errors"))), self.draw)
+        layout.addRow(task_dialog.button(translate("HoleFill", "Preview"), "HoleFillPointFitPreview", self.preview))
+        self.status = task_dialog.status_line("HoleFillPointFitStatus")
         layout.addRow(self.status)
         self.result = None
         self.preview()
 
     def options(self):
         return dict(method=self.method.currentText(), tolerance=self.tolerance.value(), degree=self.degree.value(),
-                    thb=self.adaptive.isChecked(), weights=preferences.get("BidgcnWeights"))
+                    adaptive=self.adaptive.isChecked(), weights=preferences.get("BidgcnWeights"))
 
     def preview(self):
         import HoleFill

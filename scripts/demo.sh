@@ -50,11 +50,11 @@ done
 mkdir -p "$out/pointcloud"
 cp "$cages"/scan_patch.xyz "$out/pointcloud/"
 for param in bidgcn shape; do
-  "$build/App/holefill" fit-points "$out/pointcloud/scan_patch.xyz" --param $param --thb --tolerance 5e-4 \
+  "$build/App/holefill" fit-points "$out/pointcloud/scan_patch.xyz" --method $param --relative-tolerance 5e-4 \
     --out "$out/pointcloud/scan_fit_$param.step" --json >"$out/pointcloud/scan_fit_$param.json" 2>/dev/null || true
   /usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); it=r["iterations"]; print("[demo] point cloud, %-6s parameters (%.3f s): %d levels, %d functions, max error %.1e of the diagonal, tolerance %s, %d folded samples" % (sys.argv[2], r["parameterization"]["seconds"], r["levels"], it[-1]["dof"], it[-1]["max_error"], "met" if r["met_tolerance"] else "NOT met", r["folds"]))' "$out/pointcloud/scan_fit_$param.json" "$param"
 done
-"$build/App/holefill" fit-points "$out/pointcloud/scan_patch.xyz" --param shape --thb --tolerance 5e-4 --faces \
+"$build/App/holefill" fit-points "$out/pointcloud/scan_patch.xyz" --method shape --relative-tolerance 5e-4 --faces \
   --out "$out/pointcloud/scan_fit_cells.brep" >/dev/null 2>&1 || true
 "$build/App/holefill" render "$out/pointcloud/scan_fit_cells.brep" --mode curvature --quantity mean --view top \
   --out "$out/pointcloud/scan_fit_cells.png" --size 800x600 >/dev/null

@@ -52,6 +52,7 @@
 #include "options/labeled_fit_schema.h"
 #include "options/mesh_fill_schema.h"
 #include "options/option_sets.h"
+#include "options/point_cloud_fit_schema.h"
 
 using namespace holefill;
 
@@ -83,10 +84,11 @@ const char* kUsage =
     "                --fit moves the cage (and anchors) to fit the target's points (mesh vertices, or x y z lines)\n"
     "  holefill fit REGION.obj|.off|.ply|.stl --labels LABELS.json --out OUT.brep|.step [--ctrl 12x12] [--untrimmed-out S.brep]\n"
     "                [--json] [labeled fitting's options, `holefill options labeled_fit`: --extension fit|G2|G1|none,\n"
-    "                --max-ctrl, --tolerance, --margin, --reach, --fairness, --isocurves, --mesh-fairness, --smoothing,\n"
-    "                --frame-placement, --release-depth, --hold-labels]\n"
+    "                --max-ctrl, --tolerance, --relative-tolerance, --margin, --reach, --fairness, --isocurves, --mesh-fairness,\n"
+    "                --smoothing, --frame-placement, --release-depth, --hold-labels]\n"
     "                labeled fitting of a trimmed mesh region: its extension to the domain's rectangle, control points\n"
-    "                refined while the data max exceeds the tolerance (--ctrl alone: exactly those); LABELS.json:\n"
+    "                refined while the data max exceeds the tolerance (--tolerance in model units, or --relative-tolerance\n"
+    "                of the region's diagonal, 1e-3 by default; --ctrl alone: exactly those); LABELS.json:\n"
     "                {\"segments\": [{\"label\": \"N\", \"vertices\": [i, j, ...]}, ...]} (0-based, along the boundary)\n"
     "  holefill param CLOUD.txt --out UV.txt [--method shape|invdist|uniform|bidgcn] [--radius R] [--corners I,J,K,L]\n"
     "                [--weights W.pt] [--json]\n"
@@ -95,10 +97,12 @@ const char* kUsage =
     "                boundary points without u v get chord length between four corners\n"
     "                (found, or the 0-based points given); UV.txt: 'u v' per point, same order; R in the unit-cube-scaled cloud;\n"
     "                bidgcn: the learned parameterizer (shipped weights unless --weights)\n"
-    "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--param shape|invdist|uniform|bidgcn] [--thb] [--tolerance T]\n"
-    "                [--degree 3] [--cells 4] [--iterations 8] [--weights W.pt] [--faces] [--json]   spline fit of a point cloud\n"
-    "                (as for param) with parameter correction; --thb refines adaptively (THB-splines) until the max error <= T\n"
-    "                (of the diagonal); OUT holds the finest-level B-spline face, or with --faces one face per hierarchical cell\n"
+    "  holefill fit-points CLOUD.txt --out OUT.brep|.step [--json] [the fit's options, `holefill options point_fit`:\n"
+    "                --method shape|bidgcn|invdist|uniform, --tolerance T, --relative-tolerance R, --degree, --cells,\n"
+    "                --iterations, --uniform, --faces, ...]   spline fit of a point cloud (as for param) with parameter\n"
+    "                correction, refined adaptively (THB-splines; --uniform: one level) until the max error <= T (model\n"
+    "                units) or R of the diagonal (1e-3 by default); OUT holds the finest-level B-spline face, or with\n"
+    "                --faces one face per hierarchical cell\n"
     "  holefill samples DIR        write the bundled sample models (.brep, scan_with_holes.obj, cage_*.obj quad cages,\n"
     "                labeled_region.obj with its labeled_region.labels.json, scan_patch.xyz: a bare point cloud)\n"
     "  holefill train uvtran [--out DIR] [--stage1-steps N] [--stage2-steps N] [--batch B] [--threads T]\n"
@@ -119,7 +123,7 @@ struct Args {
 Args parse(int argc, char** argv) {
   // Valueless flags: the verbs' own, and every Bool option's (its flag sets it).
   static const std::vector<std::string> flags = [] {
-    std::vector<std::string> f = {"--json", "--all", "--all-holes", "--thb", "--faces"};
+    std::vector<std::string> f = {"--json", "--all", "--all-holes"};
     for (const auto& set : optionSetNames())
       for (const OptionField& o : optionSet(set).fields)
         if (o.kind == OptionKind::Bool && !o.flag.empty() && std::find(f.begin(), f.end(), o.flag) == f.end()) f.push_back(o.flag);
@@ -133,7 +137,7 @@ Args parse(int argc, char** argv) {
     if (s.rfind("--", 0) == 0) {
       const auto eq = s.find('=');
       if (eq != std::string::npos) { a.opt[s.substr(0, eq)] = s.substr(eq + 1); continue; }
-      // --faces is fit-points' flag but render's list of faces.
+      // --faces is fit-points' flag (pointCloudFitSchema's cellFaces) but render's list of faces.
       const bool flag = std::find(flags.begin(), flags.end(), s) != flags.end() && !(s == "--faces" && a.verb != "fit-points");
       if (flag) { a.opt[s] = "1"; continue; }
       if (i + 1 >= argc) throw Error("option " + s + " needs a value");
@@ -530,14 +534,7 @@ int cmdFitPoints(const Args& a) {
   if (a.input.empty()) throw Error("fit-points: no point cloud given (lines x y z flag [u v])");
   if (!a.has("--out")) throw Error("fit-points: --out OUT.brep (or .step) is required");
   PointCloudFitOptions o;
-  o.parameterization.weights = cloudWeightsByName(a.get("--param", "shape"));
-  o.parameterization.weightsFile = a.get("--weights", "");
-  if (a.has("--degree")) o.fit.degree = static_cast<int>(number(a.get("--degree"), "--degree"));
-  if (a.has("--tolerance")) o.fit.tolerance = number(a.get("--tolerance"), "--tolerance");
-  if (a.has("--cells")) o.fit.baseCells = static_cast<int>(number(a.get("--cells"), "--cells"));
-  if (a.has("--iterations")) o.fit.maxIterations = static_cast<int>(number(a.get("--iterations"), "--iterations"));
-  if (!a.has("--thb")) o.fit.maxLevels = 1;  // one uniform level: plain least squares with parameter correction
-  o.cellFaces = a.has("--faces");
+  applyFlags(pointCloudFitSchema(), a, o);
   const PointCloudFitResult r = fitPointCloud(readCloud(a.input), o);
   reportFound(r.completion);
   writeShape(r.shape, a.get("--out"));

@@ -139,6 +139,11 @@ std::string CloudParameterization::toJson() const {
   return j.str();
 }
 
+std::string cloudWeightsName(CloudWeights w) {
+  const char* names[] = {"uniform", "invdist", "shape", "bidgcn"};
+  return names[static_cast<int>(w)];
+}
+
 CloudWeights cloudWeightsByName(const std::string& name) {
   if (name == "uniform") return CloudWeights::Uniform;
   if (name == "invdist" || name == "inverse-distance") return CloudWeights::InverseDistance;
@@ -168,8 +173,7 @@ CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const st
   CloudParameterization out;
   out.points = n;
   out.boundaryPoints = nb;
-  const char* names[] = {"uniform", "invdist", "shape", "bidgcn"};
-  out.method = names[static_cast<int>(o.weights)];
+  out.method = cloudWeightsName(o.weights);
   out.radius = o.radius > 0 ? o.radius : 3.0 / std::sqrt(static_cast<double>(n));
   const std::vector<std::vector<int>> ball = radiusNeighbours(p, out.radius);
   for (int k = 0; k < n; ++k)

@@ -47,6 +47,7 @@ struct CloudParameterization {
 CloudParameterization parameterizeCloud(const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV,
                                         const CloudParameterizationOptions& options = {});
 
+std::string cloudWeightsName(CloudWeights weights);            // the name cloudWeightsByName takes back
 CloudWeights cloudWeightsByName(const std::string& name);  // "uniform", "invdist", "shape", "bidgcn"; throws Error otherwise
 
 }  // namespace holefill

@@ -17,7 +17,7 @@ namespace {
 // Whether the region's scan noise (σ, of the diagonal) could be what a fit misses: 5 σ, about the
 // largest of 20,000 normal deviates, above the tolerance. Such a fit is refined no further than
 // noisyMaxControl, and the relaxed map is tried for fewer control points.
-bool noiseCouldBeTheMiss(double noise, const LabeledFitOptions& o) { return 5 * noise > o.tolerance; }
+bool noiseCouldBeTheMiss(double noise, const LabeledFitOptions& o) { return 5 * noise > o.relativeTolerance; }
 
 // Extension, fit and refinement over one map of the region: the labeled one, or the labels
 // relaxed (relaxLabels).
@@ -129,7 +129,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     // a clean region reaches 1e-6, and twice that is no failure (the extension was given up on
     // clean regions, and their weak control points came back).
     const auto fails = [&](const TensorFitResult& f) {
-      return f.dataMax > o.tolerance && (f.dataRms > 2 * bare.dataRms || f.dataMax > 2 * bare.dataMax);
+      return f.dataMax > o.relativeTolerance && (f.dataRms > 2 * bare.dataRms || f.dataMax > 2 * bare.dataMax);
     };
     if (fails(r.fit)) {
       char line[200];
@@ -188,7 +188,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
   // mean (measured: cone_corner_n0p05_cw stopped at 9 × 12 with max 5.6 σ, rms 1.0 σ).
   const bool noisy = noiseCouldBeTheMiss(r.noise, o);
   const int most = noisy ? std::min(o.maxControl, o.noisyMaxControl) : o.maxControl;
-  while (o.maxControl > 0 && r.fit.dataMax > o.tolerance) {
+  while (o.maxControl > 0 && r.fit.dataMax > o.relativeTolerance) {
     if (r.fit.dataRms <= 1.5 * r.noise && bias.max <= r.noise && r.fit.dataMax <= 5 * r.noise) {
       char line[200];
       std::snprintf(line, sizeof line, "stopped: what is left is scan noise (max within 5 σ, rms within 1.5 σ, no neighbourhood off by σ; σ %.2e of the diagonal)",
@@ -222,12 +222,12 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     ++r.refinementsKept;
   }
   r.dataBias = bias.max;
-  r.metTolerance = r.fit.dataMax <= std::max(o.tolerance, 5 * r.noise);
+  r.metTolerance = r.fit.dataMax <= std::max(o.relativeTolerance, 5 * r.noise);
   if (!r.metTolerance) {
     char line[240];
     std::snprintf(line, sizeof line,
                   "the fit misses the region's data: max %.2e of the diagonal, above the tolerance %.2e and 5 times the scan noise (%.2e)",
-                  r.fit.dataMax, o.tolerance, r.noise);
+                  r.fit.dataMax, o.relativeTolerance, r.noise);
     r.warnings.push_back(line);
   }
   return r;
@@ -236,7 +236,8 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
 }  // namespace
 
 void checkLabeledFitOptions(const LabeledFitOptions& o) {
-  if (!(o.tolerance > 0)) throw Error("the tolerance must be positive");
+  if (!(o.relativeTolerance > 0)) throw Error("the relative tolerance must be positive");
+  if (!(o.tolerance >= 0)) throw Error("the tolerance must be zero (the relative tolerance) or positive");
   if (o.fit.controlU < 4 || o.fit.controlV < 4) throw Error("a cubic fit needs at least 4 control points a direction");
   if (o.maxControl != 0 && o.maxControl < std::max(o.fit.controlU, o.fit.controlV))
     throw Error("maxControl (the most control points a direction) must be 0 (exactly the start's) or at least the larger of controlU and controlV");
@@ -250,9 +251,14 @@ void checkLabeledFitOptions(const LabeledFitOptions& o) {
                 "ask for extension G2 or G1 with them");
 }
 
-LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& o) {
+LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  checkLabeledFitOptions(o);
+  checkLabeledFitOptions(options);
+  LabeledFitOptions o = options;
+  if (o.tolerance > 0 && region.vertices.rows() > 0) {
+    const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
+    if (diagonal > 0) o.relativeTolerance = o.tolerance / diagonal;
+  }
   const LabeledParameterization labeled = parameterizeLabeled(region, segments, o.parameterization);
   LabeledFitResult r;
   try {

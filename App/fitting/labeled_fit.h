@@ -41,7 +41,7 @@ struct LabeledFitOptions {
   // Control points chosen by the data: from the larger of fit.controlU and fit.controlV along the
   // rectangle's longer side and as many as keep the cells square along the other (4 at least),
   // refined by half again per
-  // direction while the region's data max exceeds `tolerance` (of its diagonal) and what is left
+  // direction while the region's data max exceeds `relativeTolerance` (of its diagonal) and what is left
   // is more than noise (which more control points would follow): the data RMS above 1.5 times
   // the region's scan noise σ, a neighbourhood of vertices off the surface by more than σ on
   // average (fitting/residual_bias.h), or the max above 5 σ, up to maxControl per direction. A refinement is undone,
@@ -54,7 +54,10 @@ struct LabeledFitOptions {
   // 3.05e-3 at 48 × 48). A clean region that still misses goes on to maxControl: its misses are the
   // map's distortion at reflex corners and slots, which finer knots follow (bspline_corner_clean_corners
   // 1.35e-3 at 40 × 40, 7.3e-4 at 60 × 60; docs/benchmarks.md, twelfth round).
-  double tolerance = 1e-3;
+  double relativeTolerance = 1e-3;
+  // The same goal in the region's own units; > 0: used instead of relativeTolerance (what the
+  // doors' `tolerance` sets), 0: relativeTolerance of the region's bounding-box diagonal.
+  double tolerance = 0;
   int maxControl = 60;
   int noisyMaxControl = 40;
   // How far the untrimmed surface reaches past the domain rectangle, as a fraction of the
@@ -103,7 +106,7 @@ struct LabeledFitResult {
 // Throws Error for options out of range (checkLabeledFitOptions) and as the stages do.
 LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<LabeledSegment>& segments, const LabeledFitOptions& options = {});
 
-// The options' ranges, checked once for every door: a positive tolerance, at least 4 control points a
+// The options' ranges, checked once for every door: a positive relative tolerance, a tolerance zero or positive, at least 4 control points a
 // direction, maxControl 0 or at least the larger start count, weights zero or positive, the reach
 // within 0 to 10, and no continuation shaping (mesh fairness, the paper's isocurves) asked of the
 // sampled extension. Throws Error naming the option.

@@ -30,15 +30,21 @@ CloudBoundaryCompletion completeCloudBoundary(FlaggedCloud& c, const std::vector
 }
 
 PointCloudFitResult fitPointCloud(const FlaggedCloud& cloud, const PointCloudFitOptions& o) {
-  const ThbFitOptions& f = o.fit;
+  ThbFitOptions f = o.fit;
   if (f.degree < 1 || f.degree > 7) throw Error("the degree must be 1 to 7");
-  if (!(f.tolerance > 0)) throw Error("the tolerance must be positive");
+  if (!(f.relativeTolerance > 0)) throw Error("the relative tolerance must be positive");
+  if (!(o.tolerance >= 0)) throw Error("the tolerance must be zero (the relative tolerance) or positive");
   if (f.baseCells < 1) throw Error("the base space needs at least one cell a direction");
   if (f.maxIterations < 1) throw Error("the fit needs at least one iteration");
   PointCloudFitResult r;
   r.cloud = cloud;
   r.completion = completeCloudBoundary(r.cloud, o.corners);
   r.parameterization = parameterizeCloud(r.cloud.points, r.cloud.boundary, r.cloud.uv, o.parameterization);
+  if (!o.adaptive) f.maxLevels = 1;
+  if (o.tolerance > 0 && r.cloud.points.rows() > 0) {
+    const double diagonal = (r.cloud.points.colwise().maxCoeff() - r.cloud.points.colwise().minCoeff()).norm();
+    if (diagonal > 0) f.relativeTolerance = o.tolerance / diagonal;
+  }
   r.fit = fitThb(r.cloud.points, r.parameterization.uv, f);
   r.shape = o.cellFaces ? thbCellFaces(r.fit.space, r.fit.surface) : TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face());
   return r;

@@ -21,7 +21,11 @@ namespace holefill {
 
 struct PointCloudFitOptions {
   CloudParameterizationOptions parameterization;
-  ThbFitOptions fit;          // maxLevels 1: one uniform level (least squares with parameter correction)
+  ThbFitOptions fit;
+  bool adaptive = true;       // false: one uniform level (fit.maxLevels 1: least squares with parameter correction)
+  // The largest point error wanted in the cloud's own units; > 0: used instead of
+  // fit.relativeTolerance (of the bounding-box diagonal), 0: that relative tolerance.
+  double tolerance = 0;
   std::vector<int> corners;   // boundary points (0-based) put on the unit square's corners where the boundary's
                               // parameters are not given; empty: the boundary's four sharpest turns
   bool cellFaces = false;     // the shape: one face per hierarchical cell, not the finest-level B-spline face
@@ -49,7 +53,8 @@ struct PointCloudFitResult {
 // (or always, with `rechord`). Throws Error as detectCloudBoundary and boundaryChordParameters do.
 CloudBoundaryCompletion completeCloudBoundary(FlaggedCloud& cloud, const std::vector<int>& corners = {}, bool rechord = false);
 
-// Throws Error for options out of range (degree 1 to 7, a positive tolerance, at least one base
+// Throws Error for options out of range (degree 1 to 7, a positive relative tolerance, a tolerance
+// zero or positive, at least one base
 // cell and one iteration) and as the stages do (a cloud too small, non-finite, without boundary).
 PointCloudFitResult fitPointCloud(const FlaggedCloud& cloud, const PointCloudFitOptions& options = {});
 

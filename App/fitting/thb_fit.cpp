@@ -38,6 +38,7 @@ void ThbFitResult::writeFields(JsonWriter& j) const {
     j.beginObject().field("dof", h.dof).field("mse", h.mse).field("max_error", h.maxError).field("refined_cells", h.refinedCells)
         .field("corrected_parameters", h.correctedParameters).endObject();
   j.endArray().field("levels", space.levels()).field("met_tolerance", metTolerance).field("folds", folds);
+  j.field("diagonal", diagonal).field("relative_tolerance", relativeTolerance).field("tolerance", relativeTolerance * diagonal);
 }
 
 std::string ThbFitResult::toJson() const {
@@ -59,6 +60,7 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
     throw Error("the cloud has " + std::to_string(n) + " points, fewer than the " + std::to_string(r.space.functions().size()) + " functions of the base space");
   const double diagonal = std::max(1e-300, (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm());
   r.diagonal = diagonal;
+  r.relativeTolerance = o.relativeTolerance;
   r.uv = uv0.cwiseMax(0.0).cwiseMin(1.0);
   for (int it = 0;; ++it) {
     ThbSpace& s = r.space;
@@ -102,7 +104,7 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
         if (d < err[k] - 1e-15) r.uv.row(k) = q.transpose(), err[k] = d, ++h.correctedParameters;
       }
     }
-    r.metTolerance = h.maxError <= o.tolerance;
+    r.metTolerance = h.maxError <= o.relativeTolerance;
     r.errors = err;
     if (r.metTolerance || it + 1 >= o.maxIterations) {
       r.history.push_back(h);
@@ -111,7 +113,7 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
     // Refine the active cells holding points above the tolerance, with their neighbours.
     std::map<int, std::set<std::pair<int, int>>> mark;  // level → cells
     for (Eigen::Index k = 0; k < n; ++k) {
-      if (err[k] <= o.tolerance) continue;
+      if (err[k] <= o.relativeTolerance) continue;
       for (int l = s.levels() - 1; l >= 0; --l) {
         const int i = std::min(s.cellsU(l) - 1, static_cast<int>(r.uv(k, 0) * s.cellsU(l)));
         const int j = std::min(s.cellsV(l) - 1, static_cast<int>(r.uv(k, 1) * s.cellsV(l)));

@@ -22,7 +22,7 @@ class JsonWriter;
 struct ThbFitOptions {
   int degree = 3;
   int baseCells = 4;              // cells per direction at level 0
-  double tolerance = 1e-3;        // max point error, relative to the cloud's bounding-box diagonal
+  double relativeTolerance = 1e-3;  // max point error, relative to the cloud's bounding-box diagonal
   double smoothing = 1e-4;        // λ, relative to the data term's scale (1e-7 left corner folds in scans; 1e-4 none, same error)
   int maxIterations = 8;
   int maxLevels = 6;              // cells are not refined beyond this many levels
@@ -45,10 +45,12 @@ struct ThbFitResult {
   bool metTolerance = false;
   Eigen::VectorXd errors;         // per point, at the corrected parameters, relative to the diagonal
   double diagonal = 0;            // of the cloud's bounding box (model units)
+  double relativeTolerance = 0;   // the goal the fit had, of the diagonal
   int folds = 0;                  // of 65 × 65 domain samples, those whose normal opposes the cloud's best-fit
                                   // plane normal (or vanishes): the surface folds there although the points
                                   // may all be within the tolerance (crowded or crossing parameters)
-  std::string toJson() const;     // iterations (dof, mse, max error, refined cells, corrected parameters), levels, met_tolerance, folds
+  std::string toJson() const;     // iterations (dof, mse, max error, refined cells, corrected parameters), levels, met_tolerance, folds,
+                                  // diagonal, relative_tolerance, tolerance (model units)
   void writeFields(JsonWriter& j) const;  // the same fields into an object the caller has open (a larger report)
 };
 

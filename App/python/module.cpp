@@ -44,6 +44,7 @@
 #include "options/labeled_fit_schema.h"
 #include "options/mesh_fill_schema.h"
 #include "options/option_sets.h"
+#include "options/point_cloud_fit_schema.h"
 
 namespace py = pybind11;
 using namespace holefill;
@@ -490,18 +491,9 @@ PYBIND11_MODULE(HoleFillApp, m) {
   }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("method") = "shape", py::arg("radius") = 0.0,
      py::arg("weights") = "", "Meshless or learned (bidgcn) parameterization of a point cloud with fixed boundary parameters: (uv per point, report JSON).");
   m.def("fitPointCloud", [](const Eigen::MatrixX3d& points, const std::vector<bool>& boundary, const Eigen::MatrixX2d& boundaryUV, bool uvGiven,
-                            const std::vector<int>& corners, const std::string& method, double radius, const std::string& weights, int degree,
-                            double tolerance, int cells, int iterations, bool thb) {
+                            const std::vector<int>& corners, const py::dict& options) {
     return guarded([&] {
-      PointCloudFitOptions o;
-      o.parameterization.weights = cloudWeightsByName(method);
-      o.parameterization.radius = radius;
-      o.parameterization.weightsFile = weights;
-      o.fit.degree = degree;
-      o.fit.tolerance = tolerance;
-      o.fit.baseCells = cells;
-      o.fit.maxIterations = iterations;
-      if (!thb) o.fit.maxLevels = 1;
+      PointCloudFitOptions o = optionsFromDict(pointCloudFitSchema(), options);
       o.corners = corners;
       FlaggedCloud cloud;
       cloud.points = points;
@@ -528,10 +520,9 @@ PYBIND11_MODULE(HoleFillApp, m) {
       for (size_t k = 0; k < used.size(); ++k) flags[k] = used[k];
       return py::make_tuple(py::bytes(shapeToBrepString(f.shape)), f.toJson(), r.uv, Eigen::VectorXd(r.errors * r.diagonal), rects, flags);
     });
-  }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("uvGiven"), py::arg("corners"), py::arg("method") = "shape",
-     py::arg("radius") = 0.0, py::arg("weights") = "", py::arg("degree") = 3, py::arg("tolerance") = 1e-3, py::arg("cells") = 4,
-     py::arg("iterations") = 8, py::arg("thb") = true,
-     "Point-cloud fit: boundary (found when `boundary` is empty), parameters, adaptive THB fit with parameter correction: "
+  }, py::arg("points"), py::arg("boundary"), py::arg("boundaryUV"), py::arg("uvGiven"), py::arg("corners"), py::arg("options") = py::dict(),
+     "Point-cloud fit, options {name: value} of optionSchema('point_fit'): boundary (found when `boundary` is empty), parameters, "
+     "adaptive THB fit with parameter correction: "
      "(face BREP, report JSON, uv per point, error per point in model units, leaf cells [level, u0, v0, u1, v1], boundary flags).");
   m.def("sampleCageNames", &cages::sampleCageNames);
   m.def("sampleCageObj", [](const std::string& name) { return guarded([&] { return formatCageObj(cages::sampleCage(name)); }); },

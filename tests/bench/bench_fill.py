@@ -111,12 +111,12 @@ def run_ours(shape, hole, method, loose=False, continuity="G1", repeats=REPEATS)
     t = time.time()
     try:
         tol = dict(tolerance=1e-4 * hole["scale"], angularTolerance=1e-2) if loose else {}
-        face, rep = HoleFill.fillHole(shape, hole, method=method, continuity=continuity, **tol)
+        face, _, rep = HoleFill.fillHole(shape, hole, method=method, continuity=continuity, sewn=False, **tol)
         dt = time.time() - t
         core = rep["timings"]["total"]
         for _ in range(repeats - 1):
             t = time.time()
-            _, again = HoleFill.fillHole(shape, hole, method=method, continuity=continuity, **tol)
+            _, _, again = HoleFill.fillHole(shape, hole, method=method, continuity=continuity, sewn=False, **tol)
             dt = min(dt, time.time() - t)
             core = min(core, again["timings"]["total"])
         rep["timings"]["total"] = core

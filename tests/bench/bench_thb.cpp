@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   const double paramSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   ThbFitOptions thb;
-  thb.tolerance = 2e-4;  // of the region's diagonal: about the scan's own noise
+  thb.relativeTolerance = 2e-4;  // of the region's diagonal: about the scan's own noise
   thb.maxIterations = 10;
   thb.maxLevels = 6;
   const auto t1 = std::chrono::steady_clock::now();

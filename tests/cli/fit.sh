@@ -72,10 +72,11 @@ expect_error "an unknown --isocurves" "--isocurves" "$T/region.obj" --labels "$T
 if "$H" fit "$T/region.obj" --labels "$T/labels.json" --extension G2 --isocurves paper --out "$T/fit_paper_iso.brep" >/dev/null 2>"$T/err" && [ -s "$T/fit_paper_iso.brep" ]; then
   ok "fit with the paper's isocurve fairness"; else bad "fit --isocurves paper: $(cat "$T/err")"; fi
 expect_error "--max-ctrl below --ctrl" "at least the larger of controlU" "$T/region.obj" --labels "$T/labels.json" --ctrl 10x8 --max-ctrl 6
-expect_error "zero --tolerance" "tolerance must be positive" "$T/region.obj" --labels "$T/labels.json" --tolerance 0
+expect_error "zero --relative-tolerance" "--relative-tolerance: relativeTolerance" "$T/region.obj" --labels "$T/labels.json" --relative-tolerance 0
+expect_error "negative --tolerance" "--tolerance: tolerance" "$T/region.obj" --labels "$T/labels.json" --tolerance -1
 expect_error "negative --reach" "--reach: reach must be between 0 and 10" "$T/region.obj" --labels "$T/labels.json" --reach -0.1
 # (--reach 0: the domain is the rectangle, 6 x 3 units; the default reach widens it by 0.05 of 6 a side.)
-if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --tolerance 1e-4 --reach 0 --out "$T/fit_refined.brep" --json \
+if "$H" fit "$T/region.obj" --labels "$T/labels.json" --ctrl 5x5 --max-ctrl 30 --relative-tolerance 1e-4 --reach 0 --out "$T/fit_refined.brep" --json \
      >"$T/fit_refined.json" 2>"$T/err"; then ok "fit with refined control points"; else bad "fit --max-ctrl: $(cat "$T/err")"; fi
 "$PY" - "$T" <<'PY' && ok "refinement: more control points, the data closer, each try reported" || bad "refined: $(cat "$T/fit_refined.json")"
 import json, sys

@@ -65,7 +65,7 @@ def box_without_fillet():
 def test_mixed_crease_loop_asks_g0_on_creases_and_overrides_win():
     shape = box_without_fillet()
     hole = HoleFill.findHoles(shape)[0]
-    face, rep = HoleFill.fillHole(shape, hole)
+    face, _, rep = HoleFill.fillHole(shape, hole)
     assert rep["status"] == "ok" and rep["achieved"] == "G1", rep["message"]
     per = {e["edge"]: e for e in rep["edge_continuity"]}
     lines = [i for i in hole["edgeIndices"] if shape.Edges[i - 1].Curve.__class__.__name__ == "Line"]
@@ -75,7 +75,7 @@ def test_mixed_crease_loop_asks_g0_on_creases_and_overrides_win():
         assert e["reached"] in (("G1", "G2") if i in lines else ("G0", "G1", "G2")), e
     # An explicit request wins over the detection; a request of G1 on a crease cannot be met.
     arc = [i for i in per if i not in lines][0]
-    _, rep2 = HoleFill.fillHole(shape, hole, edgeContinuity={"Edge%d" % lines[0]: "G0", arc: "G1"})
+    _, _, rep2 = HoleFill.fillHole(shape, hole, edgeContinuity={"Edge%d" % lines[0]: "G0", arc: "G1"})
     per2 = {e["edge"]: e for e in rep2["edge_continuity"]}
     assert per2[lines[0]]["asked"] == "G0" and per2[lines[0]]["source"] == "override"
     assert per2[arc]["asked"] == "G1" and rep2["status"] == "tolerance_not_met" and arc in rep2["faulty_edges"]
@@ -95,10 +95,10 @@ def test_inexact_neighbours_are_judged_at_the_models_accuracy():
     top.read(path)
     part = top.Solids[0]
     holed = Part.Shell([f for i, f in enumerate(part.Faces) if i != 137])
-    _, rep = HoleFill.fillHole(holed, 1)
+    _, _, rep = HoleFill.fillHole(holed, 1)
     assert rep["status"] == "ok" and "model's own accuracy" in rep["message"], rep["message"]
     assert any(e["tolerance_before"] > 1e-6 * rep["scale"] or e["g1_floor"] > 1e-5 for e in rep["per_edge"])
-    _, strict = HoleFill.fillHole(holed, 1, modelAccuracy=False)
+    _, _, strict = HoleFill.fillHole(holed, 1, modelAccuracy=False)
     assert strict["status"] == "tolerance_not_met", strict["message"]
     assert abs(strict["g0"] - rep["g0"]) <= 1e-12  # the same face, judged two ways
 
@@ -106,9 +106,9 @@ def test_inexact_neighbours_are_judged_at_the_models_accuracy():
 def test_any_pick_order_gives_the_same_face():
     shape = box_without_fillet()
     edges = HoleFill.findHoles(shape)[0]["edgeIndices"]
-    ref, _ = HoleFill.fillHole(shape, ["Edge%d" % e for e in edges])
+    ref, _, _ = HoleFill.fillHole(shape, ["Edge%d" % e for e in edges])
     for pick in (list(reversed(edges)), [edges[2], edges[0]], [edges[3]], [edges[1], edges[3], edges[0], edges[2]]):
-        face, _ = HoleFill.fillHole(shape, pick)
+        face, _, _ = HoleFill.fillHole(shape, pick)
         a, b = ref.Surface.getPoles(), face.Surface.getPoles()
         assert len(a) == len(b) and all(len(r) == len(q) for r, q in zip(a, b)), pick
         assert max((p - q).Length for r, s in zip(a, b) for p, q in zip(r, s)) <= 1e-12, pick
@@ -117,21 +117,21 @@ def test_any_pick_order_gives_the_same_face():
 def test_edge_names_select_the_loop():
     shape = load("cc_valence5")
     hole = HoleFill.findHoles(shape)[0]
-    face, rep = HoleFill.fillHole(shape, [hole.edges[3]], method="mvc")
+    face, _, rep = HoleFill.fillHole(shape, [hole.edges[3]], method="mvc")
     assert sorted(rep["edges"]) == sorted(hole["edgeIndices"])
     assert rep["method"] == "mvc"
 
 
 def test_continuity_report_of_our_face_matches_fill_report():
     shape = load("panel_6_sided")
-    face, rep = HoleFill.fillHole(shape)
+    face, _, rep = HoleFill.fillHole(shape)
     cr = HoleFill.continuityReport(face, shape)
     assert abs(cr["g0"] - rep["g0"]) <= 1e-9 + 0.05 * rep["g0"], (cr["g0"], rep["g0"])
     assert cr["g1"] <= 1e-3
 
 
 def test_unreachable_g2_is_reported_not_downgraded():
-    face, rep = HoleFill.fillHole(load("filleted_box_corner"), 1, continuity="G2", maxControlPoints=600)
+    face, _, rep = HoleFill.fillHole(load("filleted_box_corner"), 1, continuity="G2", maxControlPoints=600)
     assert rep["status"] == "tolerance_not_met" and rep["requested"] == "G2" and rep["achieved"] != "G2", rep
 
 
@@ -185,19 +185,23 @@ def test_prepared_hole_is_filled_again_from_what_it_kept():
     shape = load("panel_6_sided")
     before = shape.exportBrepToString()
     prepared = HoleFill.prepareHole(shape, 1)
-    face1, rep1 = prepared.fill(method="mvc", continuity="G1")
+    face1, _, rep1 = prepared.fill(method="mvc", continuity="G1")
     computed = prepared.computed()
     assert computed[0] >= 1 and computed[1] >= 1, computed
-    face0, rep0 = prepared.fill(method="mvc", continuity="G0")
+    face0, _, rep0 = prepared.fill(method="mvc", continuity="G0")
     face2, sewn, rep2 = prepared.fill(method="mvc", continuity="G1", sewn=True)
     assert prepared.computed() == computed, (prepared.computed(), computed)
     assert rep1["status"] == rep2["status"] == "ok" and rep0["requested"] == "G0", (rep1["message"], rep0["requested"])
     assert sewn.isValid() and len(sewn.Faces) == len(shape.Faces) + 1
     # The same face as a fresh fillHole, and the shape untouched.
-    direct, rep = HoleFill.fillHole(shape, 1, method="mvc", continuity="G1")
+    direct, _, rep = HoleFill.fillHole(shape, 1, method="mvc", continuity="G1")
     poles = [p for row in face2.Surface.getPoles() for p in row]
     ref = [p for row in direct.Surface.getPoles() for p in row]
     assert len(poles) == len(ref) and max((a - b).Length for a, b in zip(poles, ref)) < 1e-9
+    # One shape of result whatever is asked: (face, sewn, report), sewn None when not asked for.
+    bare = prepared.fill(method="mvc", continuity="G1", sewn=False)
+    assert isinstance(bare, HoleFill.FilledHole) and bare.sewn is None and bare.report["status"] == "ok"
+    assert isinstance(direct, Part.Face) and HoleFill.fillHole(shape, 1, method="mvc").sewn.isValid()
     assert shape.exportBrepToString() == before
     fcharness.expect_error(lambda: prepared.fill(method="nope"), "method must be one of")
 
@@ -236,7 +240,7 @@ def test_a_prepared_hole_handed_to_make_fill_is_not_read_again_and_change_fill_i
         doc.recompute()
         edges = [HoleFill.findHoles(src.Shape)[0].edges[0]]
         hole = HoleFill.prepareHole(src.Shape, edges)
-        face, rep = hole.fill(continuity="G1")
+        face, _, rep = hole.fill(continuity="G1", sewn=False)  # as the Fill asks it (Output Face)
         other = HoleFill.prepareHole(load("sheet_two_holes"), 1)  # another model's hole
         fcharness.expect_error(lambda: HoleFill.makeFill(src, edges, prepared=other), "is not the one")
         fill = HoleFill.makeFill(src, edges, continuity="G1", prepared=hole)
@@ -341,7 +345,7 @@ def test_failed_make_fill_leaves_document_as_it_was():
 def test_uvtran_method_projection_surface_and_fallback():
     shape = load("cc_valence5")
     assert "libtorch" in HoleFill.learnInfo(), HoleFill.learnInfo()
-    face, rep = HoleFill.fillHole(shape, 1, method="uvtran")
+    face, _, rep = HoleFill.fillHole(shape, 1, method="uvtran")
     assert rep["method"] == "uvtran" and rep["status"] == "ok" and rep["g1"] <= 1e-3, (rep["method"], rep["g1"])
     surf = HoleFill.projectionSurface(shape, 1)
     assert surf.Surface.TypeId == "Part::GeomBSplineSurface" and surf.Surface.NbUPoles == 8
@@ -356,7 +360,7 @@ def test_uvtran_method_projection_surface_and_fallback():
         f.write("not a torch archive")
     os.environ["HOLEFILL_UVTRAN_WEIGHTS"] = bad
     try:
-        face, rep = HoleFill.fillHole(shape, 1, method="uvtran")
+        face, _, rep = HoleFill.fillHole(shape, 1, method="uvtran")
         assert rep["method"] == "uvtran:mvc" and rep["status"] == "ok", rep["method"]
         assert any("uvtran failed" in w and "corrupt" in w for w in rep["warnings"]), rep["warnings"]
         fcharness.expect_error(lambda: HoleFill.projectionSurface(shape, 1), "corrupt")

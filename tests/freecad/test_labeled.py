@@ -59,7 +59,7 @@ def test_a_labeled_region_becomes_one_trimmed_face():
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, meshFairness=-1), "zero or positive")
     # Control points chosen by the data through the Python door; exactly the given ones with
     # maxControl=0; a maximum below the start is refused.
-    refined = HoleFill.fitLabeled(m, labels, controlPoints=(5, 5), maxControl=30, tolerance=1e-4)[2]
+    refined = HoleFill.fitLabeled(m, labels, controlPoints=(5, 5), maxControl=30, relativeTolerance=1e-4)[2]
     assert refined["control_points_u"] > 5 and len(refined["refinements"]) >= 2, refined
     assert refined["weak_control_points"] == 0 and refined["data_max"] < 1e-3, refined
     exact = HoleFill.fitLabeled(m, labels, controlPoints=(5, 5), maxControl=0)[2]
@@ -104,7 +104,7 @@ def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
     # tests/freecad/test_option_schema.py checks every one of them.
     fields = HoleFill.optionSchema("labeled_fit")
     assert fields["maxControl"]["default"] == 60
-    assert fit.MaxControlPoints == 60 and fit.Tolerance == 1e-3 and fit.ReleaseDepth == 0.05 and fit.Isocurves == "grid"
+    assert fit.MaxControlPoints == 60 and fit.RelativeTolerance == 1e-3 and fit.Tolerance == 0 and fit.ReleaseDepth == 0.05 and fit.Isocurves == "grid"
     import json
     rep = json.loads(fit.Report)
     assert fit.Shape.isValid() and rep["weak_control_points"] == 0 and rep["data_max"] < 5e-3, rep
@@ -127,6 +127,25 @@ def test_labels_and_fit_objects_follow_each_other_and_refuse_bad_input():
     fcharness.expect_error(lambda: HoleFill.makeLabeledFit(region), "BoundaryLabels")
     assert len(doc.Objects) == count, [o.Name for o in doc.Objects]
     FreeCAD.closeDocument(doc.Name)
+
+
+def test_a_fit_saved_with_a_relative_tolerance_reads_it_as_the_relative_tolerance():
+    # Documents saved before the tolerance took model units hold Tolerance as a float of the
+    # region's diagonal: restored, that value is RelativeTolerance, and Tolerance is 0 mm.
+    from HoleFill import labeled
+    doc = FreeCAD.newDocument("old_fit")
+    try:
+        obj = doc.addObject("Part::FeaturePython", "Fit")
+        labeled.LabeledFitFeature(obj)
+        obj.removeProperty("RelativeTolerance")
+        obj.removeProperty("Tolerance")
+        obj.addProperty("App::PropertyFloat", "Tolerance", "Fit", "as saved before")
+        obj.Tolerance = 2e-3
+        obj.Proxy.onDocumentRestored(obj)
+        assert obj.RelativeTolerance == 2e-3 and obj.Tolerance == 0, (obj.RelativeTolerance, obj.Tolerance)
+        assert obj.getTypeIdOfProperty("Tolerance") == "App::PropertyLength", obj.getTypeIdOfProperty("Tolerance")
+    finally:
+        FreeCAD.closeDocument(doc.Name)
 
 
 fcharness.run(globals())

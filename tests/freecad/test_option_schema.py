@@ -85,6 +85,22 @@ def test_values_the_schema_refuses_are_refused_by_every_door_by_name():
     fcharness.expect_error(lambda: hole._prepared.fill({"tolerance": [1]}), "tolerance must be a number, a bool or a string")
 
 
+def expect_properties_follow(feature, properties, fields):
+    """A new object of `feature` has each of `properties` ({property: option}) with the option's
+    tooltip, default and choices."""
+    doc = FreeCAD.newDocument("schema_object")
+    try:
+        obj = doc.addObject("Part::FeaturePython", "Object")
+        feature(obj)
+        for prop, name in properties.items():
+            assert obj.getDocumentationOfProperty(prop) == HoleFill.optionTip(fields[name]), prop
+            assert getattr(obj, prop) == fields[name]["default"], (prop, getattr(obj, prop), fields[name]["default"])
+            if fields[name]["kind"] == "choice":
+                assert list(obj.getEnumerationsOfProperty(prop)) == fields[name]["choices"], prop
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+
+
 def test_labeled_fitting_follows_its_schema_in_every_door():
     fields = HoleFill.optionSchema("labeled_fit")
     assert list(fields) == [f["name"] for f in __import__("json").loads(HoleFillApp.optionSchema("labeled_fit"))]
@@ -96,24 +112,15 @@ def test_labeled_fitting_follows_its_schema_in_every_door():
                 continue
             assert params[name].default == f["default"], (fn.__name__, name, params[name].default, f["default"])
     assert set(labeled.FIT_PROPERTIES.values()) == set(fields), set(fields) ^ set(labeled.FIT_PROPERTIES.values())
-    doc = FreeCAD.newDocument("schema_fit")
-    try:
-        obj = doc.addObject("Part::FeaturePython", "Fit")
-        labeled.LabeledFitFeature(obj)
-        for prop, name in labeled.FIT_PROPERTIES.items():
-            assert obj.getDocumentationOfProperty(prop) == HoleFill.optionTip(fields[name]), prop
-            assert getattr(obj, prop) == fields[name]["default"], (prop, getattr(obj, prop), fields[name]["default"])
-            if fields[name]["kind"] == "choice":
-                assert list(obj.getEnumerationsOfProperty(prop)) == fields[name]["choices"], prop
-    finally:
-        FreeCAD.closeDocument(doc.Name)
+    expect_properties_follow(labeled.LabeledFitFeature, labeled.FIT_PROPERTIES, fields)
     import Mesh
     tri = Mesh.Mesh([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0), FreeCAD.Vector(0, 1, 0)])
     for kwargs, word in ((dict(extension="G7"), "extension must be one of fit, G2, G1, none"),
                          (dict(isocurves="wavy"), "isocurves must be one of grid, paper"),
                          (dict(reach=11.0), "reach must be between 0 and 10"),
                          (dict(controlPoints=(3, 12)), "controlU must be a whole number between 4 and 200"),
-                         (dict(tolerance=0.0), "tolerance must be positive")):
+                         (dict(tolerance=-1.0), "tolerance must be zero or positive"),
+                         (dict(relativeTolerance=0.0), "relativeTolerance must be")):
         fcharness.expect_error(lambda: HoleFill.fitLabeled(tri, [("N", [0, 1])], **kwargs), word)
 
 
@@ -142,6 +149,26 @@ def test_gnurbs_follows_its_schema():
     fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], solve="greedy"),
                            "solve must be one of fair, stepwise")
     fcharness.expect_error(lambda: HoleFill.gnurbsSurface(cage["vertices"], cage["quads"], maxValence=4), "valence")
+
+
+def test_point_cloud_fit_follows_its_schema_in_every_door():
+    from HoleFill import pointcloud
+    fields = HoleFill.optionSchema("point_fit")
+    params = inspect.signature(HoleFill.fitPoints).parameters
+    for name, f in fields.items():
+        if name == "cellFaces":  # the CLI's shape choice; fitPoints returns the finest-level face
+            continue
+        assert params[name].default == f["default"], (name, params[name].default, f["default"])
+    made = inspect.signature(HoleFill.makePointCloudFit).parameters
+    for name in pointcloud.POINT_FIT_PROPERTIES.values():
+        assert made[name].default == fields[name]["default"], name
+    expect_properties_follow(pointcloud.PointCloudFitFeature, pointcloud.POINT_FIT_PROPERTIES, fields)
+    pts = [FreeCAD.Vector(i, j, 0.1 * i * j) for i in range(6) for j in range(6)]
+    for kwargs, word in ((dict(method="support"), "method must be one of shape, bidgcn, invdist, uniform"),
+                         (dict(degree=8), "degree must be a whole number between 1 and 7"),
+                         (dict(tolerance=-1.0), "tolerance must be zero or positive"),
+                         (dict(relativeTolerance=0.0), "relativeTolerance must be")):
+        fcharness.expect_error(lambda: HoleFill.fitPoints(pts, **kwargs), word)
 
 
 fcharness.run(globals())

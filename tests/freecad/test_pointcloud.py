@@ -127,7 +127,8 @@ def test_bad_clouds_give_clear_errors():
     fcharness.expect_error(lambda: HoleFill.parameterize(twice, boundary), "coincide")
     fcharness.expect_error(lambda: HoleFill.parameterize(pts, boundary, method="bidgcn", weights="/nonexistent/w.pt"), "weights not found")
     fcharness.expect_error(lambda: HoleFill.fitPoints(pts[:8]), "at least 10")
-    fcharness.expect_error(lambda: HoleFill.fitPoints(pts, tolerance=-1), "tolerance must be positive")
+    fcharness.expect_error(lambda: HoleFill.fitPoints(pts, tolerance=-1), "tolerance must be")
+    fcharness.expect_error(lambda: HoleFill.fitPoints(pts, relativeTolerance=0), "relativeTolerance must be")
     line = [FreeCAD.Vector(k, 2 * k, 0) for k in range(30)]
     fcharness.expect_error(lambda: HoleFill.fitPoints(line), "line")
 

@@ -22,7 +22,7 @@ def test_defaults_are_the_macro_apis():
     assert preferences.get("UvtranWeights") == sig["weights"].default == ""
     assert preferences.get("BidgcnWeights") == inspect.signature(HoleFill.fitPoints).parameters["weights"].default == ""
     assert preferences.get("ZebraRenderer") == "shader"
-    assert preferences.get("FitTolerance") == inspect.signature(HoleFill.fitLabeled).parameters["tolerance"].default == 1e-3
+    assert preferences.get("FitTolerance") == inspect.signature(HoleFill.fitLabeled).parameters["relativeTolerance"].default == 1e-3
 
 
 def test_values_live_in_freecads_parameters():

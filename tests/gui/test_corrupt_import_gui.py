@@ -70,7 +70,7 @@ def body():
     assert "cut_cage.obj" in text2, text2
     assert sorted(o.Name for o in doc.Objects) == names
     # Still up and working: the sample's hole fills, and the view draws it.
-    face, report = HoleFill.fillHole(src.Shape, 1)
+    face, _, report = HoleFill.fillHole(src.Shape, 1)
     assert report["status"] in ("ok", "tolerance_not_met"), report["status"]
     assert FreeCADGui.getMainWindow().isVisible()
     h.finish(True, far=text, cut=text2)

@@ -4,7 +4,7 @@ Macro-friendly API (camelCase like FreeCAD's own):
 
     import HoleFill
     holes = HoleFill.findHoles(obj.Shape)                    # list of Hole
-    face, report = HoleFill.fillHole(obj.Shape, holes[0], continuity="G1")
+    face, sewn, report = HoleFill.fillHole(obj.Shape, holes[0], continuity="G1")
     (a, b), model, report = HoleFill.fillAdjacentHoles(obj.Shape, holes[0], sketch.Shape.Edges[0])
     print(report["achieved"], report["g0"], report["g1"])
     fill = HoleFill.makeFill(obj, ["Edge3"], method="auto")     # parametric document object
@@ -17,6 +17,7 @@ back modified: every result is a new shape. Reports are plain dicts with the
 fields of DESIGN.md (g0, g0_relative, g1, g2, requested, achieved, str, per_edge,
 timings, ...). Errors raise HoleFillError with a message that says what to do.
 """
+import collections
 import json
 
 from HoleFill import build_check
@@ -86,7 +87,7 @@ def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureToler
         o["weights"] = str(weights)
     return o
 
-__all__ = ["optionSchema", "optionTip", "FILL_OPTIONS", "findHoles", "fillHole", "fillHoles", "prepareHole", "PreparedHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
+__all__ = ["optionSchema", "optionTip", "FILL_OPTIONS", "findHoles", "fillHole", "fillHoles", "prepareHole", "PreparedHole", "FilledHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
            "CONTINUITIES", "renderImage", "curvatureMap", "inspectionMesh", "faceContinuity", "continuityAlong", "meshHoles",
            "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole", "gnurbsSurface", "cageFromShape", "readCage",
            "sampleCage", "makeGnurbs", "cageShell", "importCage", "extraordinaryPoints", "fitLabeled"]
@@ -176,6 +177,12 @@ def _holeKey(hole):
     return tuple(hole)
 
 
+FilledHole = collections.namedtuple("FilledHole", "face sewn report")
+FilledHole.__doc__ = """What fillHole and PreparedHole.fill return, always the same three: `face` (a Part.Face),
+`sewn` (a copy of the model with the face sewn in; None when asked with sewn=False) and `report`
+(a dict: status, achieved, per-edge continuity, warnings). Unpacks as face, sewn, report."""
+
+
 class PreparedHole:
     """A hole of a shape, read and found once and filled as often as asked (prepareHole): its
     boundary samples and parameterizations (UVTran's network, MVC's interior references) are kept
@@ -198,9 +205,9 @@ class PreparedHole:
 
     def fill(self, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
-             maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=False, edgeContinuity=None,
+             maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=True, edgeContinuity=None,
              detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
-        """As fillHole, on this hole."""
+        """As fillHole, on this hole: a FilledHole (face, sewn, report)."""
         options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
                                edgeContinuity, detectCreases, modelAccuracy, weights)
         # The last fill is kept: asked again with the same options (a Preview, then OK), it is
@@ -213,10 +220,7 @@ class PreparedHole:
             face, model, rep = self._prepared.fill(options, progress, bool(sewn))
         report = raiseOnFailure(json.loads(rep), "fill")
         self._last = (key, (face, model, rep))
-        f = _shape(face).Faces[0]
-        if sewn:
-            return f, _shape(model), report
-        return f, report
+        return FilledHole(_shape(face).Faces[0], _shape(model) if sewn else None, report)
 
 
 def prepareHole(shape, hole=1):
@@ -227,7 +231,7 @@ def prepareHole(shape, hole=1):
 
 def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
-             maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=False, edgeContinuity=None,
+             maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=True, edgeContinuity=None,
              detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
@@ -248,7 +252,8 @@ def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity
     weights: UVTran's weights file (.pt, from `holefill train uvtran`); "" for the shipped one.
     maxControlPoints: the most poles the solver's refinement may reach.
     The defaults are the core's (optionSchema("fill"), as `holefill options fill` lists them).
-    Returns (Part.Face, report) or, with sewn=True, (Part.Face, sewn Part.Shape, report).
+    Returns a FilledHole (face, sewn, report): the Part.Face, a copy of the model with the face sewn
+    in (None with sewn=False, which saves the sewing), and the report.
     The report says what was achieved; a fill that misses the request is returned with
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
     return PreparedHole(shape, hole).fill(method, continuity, tolerance, angularTolerance, curvatureTolerance,

@@ -32,6 +32,7 @@ FIT_OPTIONS = optionSchema("labeled_fit")
 _FIT = optionDefaults(FIT_OPTIONS)
 # The LabeledFit object's properties and the options they hold.
 FIT_PROPERTIES = {"ControlPointsU": "controlU", "ControlPointsV": "controlV", "MaxControlPoints": "maxControl", "Tolerance": "tolerance",
+                  "RelativeTolerance": "relativeTolerance",
                   "Extension": "extension", "Margin": "margin", "Reach": "reach", "Fairness": "fairness", "Isocurves": "isocurves",
                   "MeshFairness": "meshFairness", "Smoothing": "smoothing", "FramePlacement": "framePlacement",
                   "ReleaseDepth": "releaseDepth", "RelaxLabels": "relaxLabels"}
@@ -40,7 +41,8 @@ FIT_PROPERTIES = {"ControlPointsU": "controlU", "ControlPointsV": "controlV", "M
 def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]), extension=_FIT["extension"], margin=_FIT["margin"],
                fairness=_FIT["fairness"], smoothing=_FIT["smoothing"], framePlacement=_FIT["framePlacement"],
                meshFairness=_FIT["meshFairness"], maxControl=_FIT["maxControl"], tolerance=_FIT["tolerance"],
-               releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], isocurves=_FIT["isocurves"]):
+               releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], isocurves=_FIT["isocurves"],
+               relativeTolerance=_FIT["relativeTolerance"]):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -51,7 +53,7 @@ def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]),
     guiding frame's placement along their sides), meshFairness (the paper's E_Mesh: how evenly the
     extension's triangles are distorted from their neighbours; 0 leaves it out). Control points:
     from controlPoints, refined by half again per direction while the data max exceeds tolerance
-    (of the region's diagonal), up to maxControl per direction (40 where the region's scan noise
+    (model units; 0: relativeTolerance of the region's diagonal), up to maxControl per direction (40 where the region's scan noise
     could be what the fit misses; 0: exactly controlPoints); the
     report's "refinements" lists the tries. releaseDepth: labeled vertices deeper than this
     fraction of their side's chord inside its line, past a sharp turn (a notch, slot, bite), are
@@ -72,7 +74,8 @@ def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]),
     options = dict(controlU=int(controlPoints[0]), controlV=int(controlPoints[1]), extension=str(extension), margin=int(margin),
                    fairness=float(fairness), smoothing=float(smoothing), framePlacement=float(framePlacement),
                    meshFairness=float(meshFairness), maxControl=int(maxControl), tolerance=float(tolerance),
-                   releaseDepth=float(releaseDepth), relaxLabels=bool(relaxLabels), reach=float(reach), isocurves=str(isocurves))
+                   relativeTolerance=float(relativeTolerance), releaseDepth=float(releaseDepth), relaxLabels=bool(relaxLabels),
+                   reach=float(reach), isocurves=str(isocurves))
     face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(v, t, _labelsJson(labels), options)
     rep = json.loads(report)
     if rep.get("log10_condition") is None:
@@ -241,7 +244,14 @@ class LabeledFitFeature(ParametricFeature):
                 kept = getattr(obj, prop)
                 setattr(obj, prop, choices)
                 setattr(obj, prop, kept if kept in choices else default[prop])
-        for prop in ("Tolerance", "Reach", "ReleaseDepth"):
+        if "Tolerance" in obj.PropertiesList and "RelativeTolerance" not in obj.PropertiesList:
+            # A document saved when Tolerance was relative to the diagonal: that value is the
+            # relative tolerance now, and Tolerance (model units) starts unset.
+            relative = float(obj.Tolerance)
+            obj.removeProperty("Tolerance")
+            add("App::PropertyFloat", "RelativeTolerance", "Fit", tip["RelativeTolerance"], relative)
+        add("App::PropertyLength", "Tolerance", "Fit", tip["Tolerance"], default["Tolerance"])
+        for prop in ("RelativeTolerance", "Reach", "ReleaseDepth"):
             add("App::PropertyFloat", prop, "Fit", tip[prop], default[prop])
         for prop in ("Fairness", "MeshFairness", "Smoothing", "FramePlacement"):
             add("App::PropertyFloat", prop, "Weights", tip[prop], default[prop])
@@ -257,8 +267,8 @@ class LabeledFitFeature(ParametricFeature):
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
                                           obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness,
-                                          obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth, obj.RelaxLabels, obj.Reach,
-                                          obj.Isocurves)
+                                          obj.MaxControlPoints, float(obj.Tolerance), obj.ReleaseDepth, obj.RelaxLabels, obj.Reach,
+                                          obj.Isocurves, obj.RelativeTolerance)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):
@@ -271,7 +281,7 @@ def makeLabeledFit(labelsObj, controlPoints=(_FIT["controlU"], _FIT["controlV"])
                    fairness=_FIT["fairness"], smoothing=_FIT["smoothing"], framePlacement=_FIT["framePlacement"],
                    meshFairness=_FIT["meshFairness"], maxControl=_FIT["maxControl"], tolerance=_FIT["tolerance"],
                    releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], name="LabeledFit",
-                   isocurves=_FIT["isocurves"]):
+                   isocurves=_FIT["isocurves"], relativeTolerance=_FIT["relativeTolerance"]):
     """A parametric labeled fit of a BoundaryLabels object's region in one undo step."""
     if labelsObj is None or not hasattr(labelsObj, "LabelsJson"):
         raise HoleFillApp.HoleFillError("makeLabeledFit needs a BoundaryLabels object (HoleFill → Label boundary)")
@@ -285,6 +295,7 @@ def makeLabeledFit(labelsObj, controlPoints=(_FIT["controlU"], _FIT["controlV"])
         obj.Fairness, obj.Smoothing, obj.FramePlacement = float(fairness), float(smoothing), float(framePlacement)
         obj.MeshFairness = float(meshFairness)
         obj.MaxControlPoints, obj.Tolerance, obj.ReleaseDepth = int(maxControl), float(tolerance), float(releaseDepth)
+        obj.RelativeTolerance = float(relativeTolerance)
         obj.RelaxLabels = bool(relaxLabels)
         obj.Reach = float(reach)
         obj.Isocurves = str(isocurves)

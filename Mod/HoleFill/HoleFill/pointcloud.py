@@ -9,16 +9,17 @@ the largest point error is within the tolerance.
 
     import HoleFill
     uv, report = HoleFill.parameterize(points, {0: (0, 0), 1: (0.1, 0), ...}, method="shape")
-    face, report = HoleFill.fitPoints(doc.Points.Points, method="bidgcn", tolerance=0.05)
+    face, report = HoleFill.fitPoints(doc.Points.Points, method="bidgcn", tolerance=0.05)  # mm
     print(report["iterations"][-1]["dof"], max(report["errors"]))
 
 `points`: FreeCAD vectors, (x, y, z) tuples, a Points.Points or Mesh.Mesh (its vertices), or an
-N×3 array. The radius is in the cloud scaled into the unit cube (0: 3/sqrt(N)); tolerances are in
-model units. Errors raise HoleFillError.
+N×3 array. The radius is in the cloud scaled into the unit cube (0: 3/sqrt(N)); `tolerance` is in
+model units, `relativeTolerance` of the cloud's diagonal. Errors raise HoleFillError.
 """
 import json
 
 import HoleFillApp
+from HoleFill import _shape, optionDefaults, optionSchema, optionTip
 from HoleFill.transaction import ParametricFeature
 
 __all__ = ["parameterize", "fitPoints", "makePointCloudFit"]
@@ -54,21 +55,30 @@ def parameterize(points, boundary, method="shape", radius=0.0, weights=""):
     return uv, json.loads(report)
 
 
-def fitPoints(points, boundary=None, method="shape", tolerance=None, degree=3, thb=True, cells=4, iterations=8,
-              corners=None, radius=0.0, weights=""):
+POINT_FIT_OPTIONS = optionSchema("point_fit")
+_PF = optionDefaults(POINT_FIT_OPTIONS)
+# The PointCloudFit object's properties and the options they hold.
+POINT_FIT_PROPERTIES = {"Method": "method", "Tolerance": "tolerance", "RelativeTolerance": "relativeTolerance", "Degree": "degree",
+                        "Adaptive": "adaptive", "Iterations": "iterations", "Weights": "weights"}
+
+
+def fitPoints(points, boundary=None, corners=None, method=_PF["method"], tolerance=_PF["tolerance"],
+              relativeTolerance=_PF["relativeTolerance"], degree=_PF["degree"], adaptive=_PF["adaptive"], cells=_PF["cells"],
+              iterations=_PF["iterations"], radius=_PF["radius"], weights=_PF["weights"], smoothing=_PF["smoothing"]):
     """(face, report): a Part.Face of the fitted B-spline (exact at the finest level) and a dict
     with the parameterization's report, per-iteration degrees of freedom, MSE and max error
-    (relative to the diagonal), `levels`, `met_tolerance`, `folds` (domain samples of 65 × 65
-    where the surface folds over), `uv` and `errors` per point (model
-    units), `cells` (the hierarchical mesh: (level, u0, v0, u1, v1) rows) and `boundary` (the
-    boundary point indices used).
+    (relative to the diagonal), `levels`, `met_tolerance`, `tolerance` (model units),
+    `relative_tolerance`, `diagonal`, `folds` (domain samples of 65 × 65 where the surface folds
+    over), `uv` and `errors` per point (model units), `cells` (the hierarchical mesh: (level, u0,
+    v0, u1, v1) rows) and `boundary` (the boundary point indices used).
 
     `boundary`: None — a Mesh's outer boundary loop, else found (alpha shape); a list of point
     indices (their parameters by chord length between `corners`, four indices, or the four
     sharpest turns); or {index: (u, v)}. `tolerance`: the largest point distance wanted, in model
-    units (None: 1e-3 of the bounding-box diagonal). `thb=False` fits one uniform level."""
+    units (0: `relativeTolerance` of the bounding-box diagonal). `adaptive=False` fits one uniform
+    level. The defaults are the core's (optionSchema("point_fit"), as `holefill options point_fit`
+    lists them)."""
     import numpy as np
-    import Part
     mesh = points if hasattr(points, "Topology") else None
     p = _points(points)
     n = len(p)
@@ -87,17 +97,13 @@ def fitPoints(points, boundary=None, method="shape", tolerance=None, degree=3, t
             if uv is not None:
                 buv[k] = (float(uv[0]), float(uv[1]))
         given = isinstance(boundary, dict)
-    diagonal = float(np.linalg.norm(p.max(axis=0) - p.min(axis=0))) if n else 0.0
-    relative = 1e-3 if tolerance is None else float(tolerance) / max(diagonal, 1e-300)
-    brep, report, uv, errors, rects, used = HoleFillApp.fitPointCloud(
-        p, flags, buv, given, [int(c) for c in (corners or [])], str(method), float(radius), str(weights), int(degree),
-        relative, int(cells), int(iterations), bool(thb))
-    shape = Part.Shape()
-    shape.importBrepFromString(brep.decode() if isinstance(brep, bytes) else brep)
+    options = dict(method=str(method), tolerance=float(tolerance), relativeTolerance=float(relativeTolerance), degree=int(degree),
+                   adaptive=bool(adaptive), cells=int(cells), iterations=int(iterations), radius=float(radius), weights=str(weights),
+                   smoothing=float(smoothing))
+    brep, report, uv, errors, rects, used = HoleFillApp.fitPointCloud(p, flags, buv, given, [int(c) for c in (corners or [])], options)
     r = json.loads(report)
-    r.update(uv=uv, errors=errors, cells=rects, boundary=[k for k in range(n) if used[k]], diagonal=diagonal,
-             tolerance=relative * diagonal)
-    return shape.Faces[0], r
+    r.update(uv=uv, errors=errors, cells=rects, boundary=[k for k in range(n) if used[k]])
+    return _shape(brep).Faces[0], r
 
 
 def _sourcePoints(obj):
@@ -121,33 +127,40 @@ class PointCloudFitFeature(ParametricFeature):
         from functools import partial
         from HoleFill.transaction import ensureProperty
         add = partial(ensureProperty, obj)
+        tip = {prop: optionTip(POINT_FIT_OPTIONS[name]) for prop, name in POINT_FIT_PROPERTIES.items()}
+        default = {prop: POINT_FIT_OPTIONS[name]["default"] for prop, name in POINT_FIT_PROPERTIES.items()}
         add("App::PropertyLink", "Source", "Fit", "The Points or Mesh object fitted")
         if "Method" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyEnumeration", "Method", "Fit", "Parameterization: bidgcn, shape, invdist or uniform")
-            obj.Method = ["shape", "bidgcn", "invdist", "uniform"]
-        add("App::PropertyLength", "Tolerance", "Fit", "Largest point distance wanted (0: 1e-3 of the diagonal)", 0.0)
-        add("App::PropertyIntegerConstraint", "Degree", "Fit", "Spline degree", (3, 1, 7, 1))
-        add("App::PropertyBool", "Adaptive", "Fit", "Refine adaptively (THB-splines); off: one uniform level", True)
-        add("App::PropertyIntegerConstraint", "Iterations", "Fit", "Refinement iterations at most", (8, 1, 30, 1))
-        add("App::PropertyFile", "Weights", "Fit", "BIDGCN's weights file (.pt) for the bidgcn method; empty: the shipped one")
+            obj.addProperty("App::PropertyEnumeration", "Method", "Fit", tip["Method"])
+            obj.Method = POINT_FIT_OPTIONS["method"]["choices"]
+            obj.Method = default["Method"]
+        add("App::PropertyLength", "Tolerance", "Fit", tip["Tolerance"], default["Tolerance"])
+        add("App::PropertyFloat", "RelativeTolerance", "Fit", tip["RelativeTolerance"], default["RelativeTolerance"])
+        f = POINT_FIT_OPTIONS["degree"]
+        add("App::PropertyIntegerConstraint", "Degree", "Fit", tip["Degree"], (default["Degree"], int(f["minimum"]), int(f["maximum"]), 1))
+        add("App::PropertyBool", "Adaptive", "Fit", tip["Adaptive"], default["Adaptive"])
+        f = POINT_FIT_OPTIONS["iterations"]
+        add("App::PropertyIntegerConstraint", "Iterations", "Fit", tip["Iterations"],
+            (default["Iterations"], int(f["minimum"]), int(f["maximum"]), 1))
+        add("App::PropertyFile", "Weights", "Fit", tip["Weights"], default["Weights"])
         add("App::PropertyString", "Report", "Result", "Fit report (JSON)")
         obj.setEditorMode("Report", 1)
 
     def execute(self, obj):
         if obj.Source is None:
             raise HoleFillApp.HoleFillError("the point-cloud fit has no source")
-        tol = float(obj.Tolerance) if float(obj.Tolerance) > 0 else None
-        face, rep = fitPoints(_sourcePoints(obj.Source), method=obj.Method, tolerance=tol, degree=obj.Degree, thb=obj.Adaptive,
+        face, rep = fitPoints(_sourcePoints(obj.Source), method=obj.Method, tolerance=float(obj.Tolerance),
+                              relativeTolerance=obj.RelativeTolerance, degree=obj.Degree, adaptive=obj.Adaptive,
                               iterations=obj.Iterations, weights=obj.Weights)
         obj.Shape = face
         obj.Report = json.dumps({k: v for k, v in rep.items() if k not in ("uv", "errors", "cells", "boundary")})
 
 
-
-def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True, iterations=8, name="PointCloudFit",
-                      weights=""):
+def makePointCloudFit(source, method=_PF["method"], tolerance=_PF["tolerance"], relativeTolerance=_PF["relativeTolerance"],
+                      degree=_PF["degree"], adaptive=_PF["adaptive"], iterations=_PF["iterations"], name="PointCloudFit",
+                      weights=_PF["weights"]):
     """A parametric fit of a Points or Mesh object in one undo step (tolerance in model units,
-    0: 1e-3 of the diagonal; weights: BIDGCN's weights file, "" for the shipped one)."""
+    0: relativeTolerance of the diagonal; weights: BIDGCN's weights file, "" for the shipped one)."""
     _sourcePoints(source)  # refuse other objects before touching the document
 
     def setup(obj):
@@ -155,8 +168,9 @@ def makePointCloudFit(source, method="shape", tolerance=0.0, degree=3, thb=True,
         obj.Source = source
         obj.Method = str(method)
         obj.Tolerance = float(tolerance)
+        obj.RelativeTolerance = float(relativeTolerance)
         obj.Degree = int(degree)
-        obj.Adaptive = bool(thb)
+        obj.Adaptive = bool(adaptive)
         obj.Iterations = int(iterations)
         obj.Weights = str(weights)
 

@@ -24,7 +24,7 @@ SETTINGS = {
     "UvtranWeights": (_MAKE_FILL["weights"].default, "Fill hole: UVTran's weights file (.pt, from holefill train uvtran); empty: the shipped one"),
     "BidgcnWeights": (inspect.signature(pointcloud.fitPoints).parameters["weights"].default,
                       "Fit point cloud: BIDGCN's weights file (.pt, from holefill train bidgcn); empty: the shipped one"),
-    "FitTolerance": (float(inspect.signature(labeled.fitLabeled).parameters["tolerance"].default),
+    "FitTolerance": (float(inspect.signature(labeled.fitLabeled).parameters["relativeTolerance"].default),
                      "Fit labeled surface and Fit point cloud: the data max that ends the refinement, as a fraction of the region's diagonal"),
     "ZebraRenderer": (inspection.ZEBRA_RENDERERS[0], "Zebra stripes: shader draws them per pixel (GLSL); vertex per vertex of the inspection mesh, "
                                 "for OpenGL without shaders (remote X, old drivers), where the shader draws nothing"),

@@ -49,7 +49,10 @@ TEST(LabeledFit, OptionsOutOfRangeAreRefusedByName) {
   const auto refused = [](const LabeledFitOptions& o, const char* word) { expectErrorNaming([&] { checkLabeledFitOptions(o); }, word); };
   EXPECT_NO_THROW(checkLabeledFitOptions({}));
   LabeledFitOptions o;
-  o.tolerance = 0;
+  o.relativeTolerance = 0;
+  refused(o, "relative tolerance");
+  o = {};
+  o.tolerance = -1;
   refused(o, "tolerance");
   o = {};
   o.fit.controlU = 3;
@@ -290,6 +293,13 @@ TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
   EXPECT_LT(refined.fit.dataMax, 1e-3);
   EXPECT_EQ(refined.fit.weakControlPoints, 0);
   EXPECT_LT(refined.fit.log10Condition, 8);
+  // The same goal in the region's own units refines alike; the relative one is then ignored.
+  const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
+  o.tolerance = 1e-3 * diagonal;
+  o.relativeTolerance = 0.5;
+  const LabeledFitResult units = fitLabeled(region, labels, o);
+  EXPECT_EQ(units.fit.surface.numU(), refined.fit.surface.numU());
+  EXPECT_EQ(units.refinements, refined.refinements);
 }
 
 // Control points stop being added where what the fit leaves is the scan noise (the discrepancy

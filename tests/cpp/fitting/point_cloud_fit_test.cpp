@@ -56,7 +56,7 @@ int faceCount(const TopoDS_Shape& s) {
 TEST(PointCloudFit, AFlaggedCloudIsFittedWithinTheTolerance) {
   const FlaggedCloud c = wavyCloud(true);
   PointCloudFitOptions o;
-  o.fit.tolerance = 1e-3;
+  o.fit.relativeTolerance = 1e-3;
   const PointCloudFitResult r = fitPointCloud(c, o);
   EXPECT_EQ(r.completion.found, -1);
   EXPECT_FALSE(r.completion.chord);
@@ -75,18 +75,42 @@ TEST(PointCloudFit, AFlaggedCloudIsFittedWithinTheTolerance) {
   EXPECT_EQ(j.find("status")->string, "ok");
   // A tolerance no fit of this cloud meets in one iteration: written, the goal missed.
   PointCloudFitOptions strict;
-  strict.fit.tolerance = 1e-9;
+  strict.fit.relativeTolerance = 1e-9;
   strict.fit.maxIterations = 1;
   const Outcome missed = fitPointCloud(c, strict).outcome();
   EXPECT_EQ(missed.status, Status::Warned);
   EXPECT_NE(missed.message.find("tolerance NOT met"), std::string::npos) << missed.message;
 }
 
+// A tolerance in the cloud's units replaces the relative one: the fit aims at it, and reports
+// both; a cloud scaled by 10 with its tolerance scaled alike fits to the same relative goal.
+TEST(PointCloudFit, AToleranceInModelUnitsReplacesTheRelativeOne) {
+  FlaggedCloud c = wavyCloud(true);
+  const double diagonal = (c.points.colwise().maxCoeff() - c.points.colwise().minCoeff()).norm();
+  PointCloudFitOptions o;
+  o.tolerance = 2e-3 * diagonal;
+  o.fit.relativeTolerance = 0.5;  // ignored where a tolerance is given
+  const PointCloudFitResult r = fitPointCloud(c, o);
+  EXPECT_NEAR(r.fit.relativeTolerance, 2e-3, 1e-15);
+  EXPECT_TRUE(r.fit.metTolerance);
+  EXPECT_LE(r.fit.errors.maxCoeff() * r.fit.diagonal, o.tolerance);
+  const JsonValue j = parseJson(r.toJson());
+  EXPECT_NEAR(j.find("tolerance")->number, o.tolerance, 1e-12);
+  EXPECT_NEAR(j.find("relative_tolerance")->number, 2e-3, 1e-15);
+  c.points *= 10;
+  o.tolerance *= 10;
+  EXPECT_NEAR(fitPointCloud(c, o).fit.relativeTolerance, 2e-3, 1e-15);
+  // Not adaptive: one uniform level, whatever the tolerance.
+  o.adaptive = false;
+  o.tolerance = 1e-9;
+  EXPECT_EQ(fitPointCloud(c, o).fit.space.levels(), 1);
+}
+
 // A bare cloud gets its boundary found and parameterized by chord length: the square's edge
 // points, and four corners at the unit square's corners.
 TEST(PointCloudFit, ABareCloudGetsItsBoundaryFoundAndChordParameters) {
   PointCloudFitOptions o;
-  o.fit.tolerance = 2e-3;
+  o.fit.relativeTolerance = 2e-3;
   o.cellFaces = true;
   const PointCloudFitResult r = fitPointCloud(wavyCloud(false), o);
   EXPECT_GT(r.completion.found, 100);  // the 116 edge points of the 30 × 30 grid, give or take the alpha shape's
@@ -109,7 +133,10 @@ TEST(PointCloudFit, OptionsOutOfRangeAreRefusedByName) {
   o.fit.degree = 8;
   refused(o, "degree");
   o = {};
-  o.fit.tolerance = 0;
+  o.fit.relativeTolerance = 0;
+  refused(o, "relative tolerance");
+  o = {};
+  o.tolerance = -1;
   refused(o, "tolerance");
   o = {};
   o.fit.baseCells = 0;

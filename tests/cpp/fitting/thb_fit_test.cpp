@@ -46,7 +46,7 @@ TEST(ThbFit, ACloudFromABicubicPatchConvergesWithParameterCorrection) {
   }
   ThbFitOptions o;
   o.baseCells = 3;
-  o.tolerance = 1e-12;  // keep correcting
+  o.relativeTolerance = 1e-12;  // keep correcting
   o.smoothing = 1e-12;
   o.maxIterations = 40;
   o.maxLevels = 1;  // the patch is in the base space: what is left to gain is in the parameters
@@ -75,7 +75,7 @@ TEST(ThbFit, RefinesWhereTheErrorIsAndRefusesBadInput) {
     uv.row(k) << a, b;
   }
   ThbFitOptions o;
-  o.tolerance = 1e-3;
+  o.relativeTolerance = 1e-3;
   o.correctParameters = false;
   const ThbFitResult r = fitThb(pts, uv, o);
   const int uniformFinest = (r.space.cellsU(r.space.levels() - 1) + 3) * (r.space.cellsV(r.space.levels() - 1) + 3);

@@ -11,7 +11,7 @@ TEST(LabeledFitSchema, EachOptionReachesTheFieldTheFitReads) {
   const auto& s = labeledFitSchema();
   LabeledFitOptions o;
   const OptionValues values = {
-      {"controlU", "10"},   {"controlV", "8"},         {"maxControl", "30"},       {"tolerance", "0.002"},
+      {"controlU", "10"},   {"controlV", "8"},         {"maxControl", "30"},       {"tolerance", "0.5"}, {"relativeTolerance", "0.002"},
       {"extension", "G1"},  {"margin", "2"},           {"reach", "0.1"},           {"fairness", "0.5"},
       {"isocurves", "paper"}, {"meshFairness", "0.01"}, {"smoothing", "1e-05"},   {"framePlacement", "2"},
       {"releaseDepth", "-1"}, {"relaxLabels", "false"}};
@@ -19,7 +19,8 @@ TEST(LabeledFitSchema, EachOptionReachesTheFieldTheFitReads) {
   EXPECT_EQ(o.fit.controlU, 10);
   EXPECT_EQ(o.fit.controlV, 8);
   EXPECT_EQ(o.maxControl, 30);
-  EXPECT_EQ(o.tolerance, 0.002);
+  EXPECT_EQ(o.tolerance, 0.5);
+  EXPECT_EQ(o.relativeTolerance, 0.002);
   EXPECT_TRUE(o.extend);
   EXPECT_EQ(o.extensionSource, LabeledFitOptions::ExtensionSource::Continuation);
   EXPECT_EQ(o.extension.order, 2);
@@ -36,7 +37,7 @@ TEST(LabeledFitSchema, EachOptionReachesTheFieldTheFitReads) {
   EXPECT_NO_THROW(checkLabeledFitOptions(o));  // a continuation may carry the paper's fairness terms
   setOption(s, o, "extension", "none");
   EXPECT_FALSE(o.extend);
-  EXPECT_EQ(s[4].get(o), "none");
+  EXPECT_EQ(s[5].get(o), "none");
 }
 
 TEST(LabeledFitSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
@@ -45,7 +46,7 @@ TEST(LabeledFitSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
   expectWellFormedSchema(s);
   LabeledFitOptions o;
   EXPECT_EQ(s[2].get(o), std::to_string(d.maxControl));
-  EXPECT_EQ(s[4].get(o), "fit");
+  EXPECT_EQ(s[5].get(o), "fit");
   EXPECT_THROW(setOption(s, o, "extension", "G3"), Error);
   EXPECT_THROW(setOption(s, o, "controlU", "3"), Error);
   EXPECT_THROW(setOption(s, o, "reach", "10.5"), Error);

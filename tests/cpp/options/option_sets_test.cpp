@@ -12,5 +12,5 @@ TEST(OptionSets, EverySetNamedHasASchemaAndAnUnknownSetIsRefused) {
     const JsonValue j = parseJson(optionSetJson(name));
     EXPECT_GT(j.array.size(), 0u) << name;
   }
-  expectErrorNaming([] { optionSetJson("nope"); }, "the sets are fill, labeled_fit, mesh_fill, gnurbs");
+  expectErrorNaming([] { optionSetJson("nope"); }, "the sets are fill, labeled_fit, mesh_fill, gnurbs, point_fit");
 }
