@@ -13,10 +13,11 @@ COMMANDS = ["HoleFill_FillHole", "HoleFill_FillMeshHoles", "HoleFill_GnurbsSurfa
 
 
 class _PanelCommand:
-    """Opens its task panel (self.panel()) on the selection. A selection the panel cannot take, or a
-    core error while it opens, is said in a message and changes nothing: the panel's overlay is
-    removed (self.cleanup()). `name` is the command's, and its words' translation context."""
-    name = menu = tip = icon = None
+    """Opens its task panel, self.open(module) with HoleFillGui's `module` (task_*.py), on the
+    selection. A selection the panel cannot take, or a core error while it opens, is said in a
+    message and changes nothing: the module's overlay is removed (its remove_overlay()). `name` is
+    the command's, and its words' translation context."""
+    name = menu = tip = icon = module = None
 
     def GetResources(self):
         return {"Pixmap": HoleFillGui.icon(self.icon), "MenuText": self.menu, "ToolTip": self.tip}
@@ -38,117 +39,99 @@ class _PanelCommand:
         if panel is not None:  # None: the user cancelled before a panel was needed
             FreeCADGui.Control.showDialog(panel)
 
+    def _module(self):
+        import importlib
+        return importlib.import_module("HoleFillGui." + self.module)
+
+    def panel(self):
+        return self.open(self._module())
+
     def cleanup(self):
-        pass
+        remove = getattr(self._module(), "remove_overlay", None)
+        if remove is not None:
+            remove()
 
 
 class FillHoleCommand(_PanelCommand):
-    name, icon = "HoleFill_FillHole", "HoleFill_Fill.svg"
+    name, icon, module = "HoleFill_FillHole", "HoleFill_Fill.svg", "task_fill"
     menu = QT_TRANSLATE_NOOP("HoleFill_FillHole", "Fill hole")
     tip = QT_TRANSLATE_NOOP("HoleFill_FillHole", "Fill an N-sided hole with one trimmed B-spline face.\n"
                             "Select one edge of the hole (its whole loop is taken) or several edges, then run.")
 
-    def panel(self):
-        from HoleFillGui import task_fill
-        return task_fill.FillTaskPanel()
+    def open(self, m):
+        return m.FillTaskPanel()
 
 
 class FillMeshHolesCommand(_PanelCommand):
-    name, icon = "HoleFill_FillMeshHoles", "HoleFill_MeshFill.svg"
+    name, icon, module = "HoleFill_FillMeshHoles", "HoleFill_MeshFill.svg", "task_meshfill"
     menu = QT_TRANSLATE_NOOP("HoleFill_FillMeshHoles", "Fill mesh holes")
     tip = QT_TRANSLATE_NOOP("HoleFill_FillMeshHoles", "Fill holes of a triangle mesh (scan, STL) with well-shaped triangles that follow the surface.\n"
                             "Select a mesh object, then run: its holes are listed and drawn; check the ones to fill.")
 
-    def panel(self):
-        from HoleFillGui import task_meshfill
-        return task_meshfill.MeshFillPanel(task_meshfill.mesh_from_selection())
-
-    def cleanup(self):
-        from HoleFillGui import task_meshfill
-        task_meshfill.remove_overlay()
+    def open(self, m):
+        return m.MeshFillPanel(m.mesh_from_selection())
 
 
 class GnurbsSurfaceCommand(_PanelCommand):
-    name, icon = "HoleFill_GnurbsSurface", "HoleFill_Gnurbs.svg"
+    name, icon, module = "HoleFill_GnurbsSurface", "HoleFill_Gnurbs.svg", "task_gnurbs"
     menu = QT_TRANSLATE_NOOP("HoleFill_GnurbsSurface", "G-NURBS surface")
     tip = QT_TRANSLATE_NOOP("HoleFill_GnurbsSurface", "A curvature-continuous (G²) surface over a quad cage with extraordinary points.\n"
                             "Select the cage (an object of quadrilateral faces), run, click edges to make them sharp,\n"
                             "set anchors at extraordinary points; the surface follows the cage when it changes.")
 
-    def panel(self):
-        from HoleFillGui import task_gnurbs
-        return task_gnurbs.GnurbsPanel(task_gnurbs.cage_from_selection())
-
-    def cleanup(self):
-        from HoleFillGui import task_gnurbs
-        task_gnurbs.remove_overlay()
+    def open(self, m):
+        return m.GnurbsPanel(m.cage_from_selection())
 
 
 class LabelBoundaryCommand(_PanelCommand):
-    name, icon = "HoleFill_LabelBoundary", "HoleFill_Labels.svg"
+    name, icon, module = "HoleFill_LabelBoundary", "HoleFill_Labels.svg", "task_labels"
     menu = QT_TRANSLATE_NOOP("HoleFill_LabelBoundary", "Label boundary")
     tip = QT_TRANSLATE_NOOP("HoleFill_LabelBoundary", "Label the boundary of a mesh region North/East/South/West for a labeled fit.\n"
                             "Select a mesh region (or its labels to edit them), run, click boundary edges to cycle\n"
                             "their segment's label, click boundary vertices to split or merge segments.")
 
-    def panel(self):
-        from HoleFillGui import task_labels
-        mesh, existing = task_labels.mesh_from_selection()
-        return task_labels.LabelPanel(mesh, existing=existing)
-
-    def cleanup(self):
-        from HoleFillGui import task_labels
-        task_labels.remove_overlay()
+    def open(self, m):
+        mesh, existing = m.mesh_from_selection()
+        return m.LabelPanel(mesh, existing=existing)
 
 
 class FitLabeledCommand(_PanelCommand):
-    name, icon = "HoleFill_FitLabeled", "HoleFill_LabeledFit.svg"
+    name, icon, module = "HoleFill_FitLabeled", "HoleFill_LabeledFit.svg", "task_labeled_fit"
     menu = QT_TRANSLATE_NOOP("HoleFill_FitLabeled", "Fit labeled surface")
     tip = QT_TRANSLATE_NOOP("HoleFill_FitLabeled", "Fit one trimmed B-spline face to a labeled mesh region: labeled parameterization,\n"
                             "extension to the four-sided domain, tensor-product fit. Select the boundary labels\n"
                             "(or the mesh); the fit follows the labels when they change.")
 
-    def panel(self):
-        from HoleFillGui import task_labeled_fit
-        return task_labeled_fit.FitPanel(task_labeled_fit.labels_from_selection())
-
-    def cleanup(self):
-        from HoleFillGui import task_labeled_fit
-        task_labeled_fit.remove_overlay()
+    def open(self, m):
+        return m.FitPanel(m.labels_from_selection())
 
 
 class FitPointCloudCommand(_PanelCommand):
-    name, icon = "HoleFill_FitPointCloud", "HoleFill_PointFit.svg"
+    name, icon, module = "HoleFill_FitPointCloud", "HoleFill_PointFit.svg", "task_point_fit"
     menu = QT_TRANSLATE_NOOP("HoleFill_FitPointCloud", "Fit point cloud")
     tip = QT_TRANSLATE_NOOP("HoleFill_FitPointCloud", "Fit a B-spline face to a Points or Mesh object: boundary (found for a bare cloud),\n"
                             "parameters (BIDGCN or classical), adaptive THB refinement with parameter correction\n"
                             "until the tolerance; shows the hierarchical mesh and the point errors.")
 
-    def panel(self):
-        from HoleFillGui import task_point_fit
-        return task_point_fit.FitPanel(task_point_fit.source_from_selection())
-
-    def cleanup(self):
-        from HoleFillGui import task_point_fit
-        task_point_fit.remove_overlay()
+    def open(self, m):
+        return m.FitPanel(m.source_from_selection())
 
 
 class ImportCageCommand(_PanelCommand):
-    name, icon = "HoleFill_ImportCage", "HoleFill_Gnurbs.svg"
+    name, icon, module = "HoleFill_ImportCage", "HoleFill_Gnurbs.svg", "task_gnurbs"
     menu = QT_TRANSLATE_NOOP("HoleFill_ImportCage", "Import quad cage (OBJ)")
     tip = QT_TRANSLATE_NOOP("HoleFill_ImportCage", "Read a quad cage from an OBJ file (with '# sharp i j', '# knot i j d', '# anchor i x y z'\n"
                             "lines) as a shell of quads, and open G-NURBS surface on it with those marks.")
 
-    def panel(self):
+    def open(self, m):
         from PySide2 import QtWidgets
-        from HoleFillGui import task_gnurbs
         import HoleFill
         path, _ = QtWidgets.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), "Import quad cage", "", "OBJ cages (*.obj)")
         if not path:
             return None
         obj, cage = HoleFill.importCage(path, FreeCAD.ActiveDocument)
         FreeCADGui.SendMsgToActiveView("ViewFit")
-        return task_gnurbs.GnurbsPanel(obj, cage["sharpEdges"], cage["anchors"], cage["knots"])
+        return m.GnurbsPanel(obj, cage["sharpEdges"], cage["anchors"], cage["knots"])
 
 
 class _InspectCommand(_PanelCommand):
@@ -163,9 +146,11 @@ class _InspectCommand(_PanelCommand):
             return
         _PanelCommand.Activated(self)
 
-    def panel(self):
-        from HoleFillGui import inspect_panels, inspection_overlay
-        return self.inspectPanel(inspect_panels, inspection_overlay)
+    module = "inspect_panels"
+
+    def open(self, m):
+        from HoleFillGui import inspection_overlay
+        return self.inspectPanel(m, inspection_overlay)
 
     def cleanup(self):
         from HoleFillGui import inspection_overlay

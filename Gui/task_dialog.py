@@ -6,6 +6,7 @@ the buttons, each with the object name the GUI tests find it by."""
 import contextlib
 
 import FreeCAD
+import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
 translate = FreeCAD.Qt.translate
@@ -22,6 +23,37 @@ def create(status, make):
         return None
     finally:
         QtWidgets.QApplication.restoreOverrideCursor()
+
+
+class Panel:
+    """What HoleFill's task panels do alike: OK and Cancel buttons; Cancel closes the panel, and
+    so does an OK that made its object. Closing calls self.release() first (the panel's overlay
+    removed, its observers and callbacks given back). The plain OK makes the object with
+    self.make() through create() (the panel stays open, its self.status saying why, when that
+    fails) and prints self.made(obj) (what the report view says of it; it may also hide the
+    source) — panels whose OK does more override accept and close with self.close()."""
+
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+
+    def release(self):
+        pass
+
+    def close(self):
+        self.release()
+        FreeCADGui.Control.closeDialog()
+
+    def accept(self):
+        obj = create(self.status, self.make)
+        if obj is None:
+            return False
+        FreeCAD.Console.PrintMessage(self.made(obj) + "\n")
+        self.close()
+        return True
+
+    def reject(self):
+        self.close()
+        return True
 
 
 def status_line(name=None):

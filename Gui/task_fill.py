@@ -56,7 +56,7 @@ class _Status:
         self.setText = box.setPlainText
 
 
-class FillTaskPanel:
+class FillTaskPanel(task_dialog.Panel):
     def __init__(self, existing=None):
         self.doc = FreeCAD.ActiveDocument
         self.obj = existing
@@ -252,18 +252,10 @@ class FillTaskPanel:
             return False
         if output == "Sewn" and self.source.ViewObject is not None:
             self.source.ViewObject.Visibility = False
-        self._close()
+        self.close()
         return True
 
-    def reject(self):
-        self._close()
-        return True
-
-    def _close(self):
+    def release(self):
         from HoleFillGui import projection_overlay
         projection_overlay.hide()
         scene_overlay.remove(OVERLAY)
-        FreeCADGui.Control.closeDialog()
-
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)

@@ -41,7 +41,7 @@ class _EdgeClicks:
             QtCore.QTimer.singleShot(0, lambda: self.panel.toggle(sub))
 
 
-class GnurbsPanel:
+class GnurbsPanel(task_dialog.Panel):
     def __init__(self, obj, sharpEdges=(), anchors=None, knots=()):
         import HoleFill
         self.obj = obj
@@ -165,32 +165,20 @@ class GnurbsPanel:
         scene_overlay.show(root)
         self.status.setText(translate("HoleFill", "%d sharp edges, %d anchors. OK builds the G² surface as a new object.") % (len(self.sharp), len(anchors)))
 
-    # -- dialog ------------------------------------------------------------------------------
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def _close(self):
+    # -- dialog (task_dialog.Panel) --------------------------------------------------------------
+    def release(self):
         FreeCADGui.Selection.removeObserver(self.observer)
         remove_overlay()
-        FreeCADGui.Control.closeDialog()
 
-    def accept(self):
+    def make(self):
         import HoleFill
-        obj = task_dialog.create(self.status, lambda: HoleFill.makeGnurbs(self.obj, sharpEdges=sorted(self.sharp), anchors=self.anchorValues(),
-                                                                          refine=self.refine.isChecked(), knots=self.knots))
-        if obj is None:
-            return False
+        return HoleFill.makeGnurbs(self.obj, sharpEdges=sorted(self.sharp), anchors=self.anchorValues(), refine=self.refine.isChecked(),
+                                   knots=self.knots)
+
+    def made(self, obj):
         import json
         rep = json.loads(obj.Report)
-        FreeCAD.Console.PrintMessage("HoleFill: G-NURBS surface %s over %s: %d B-rep faces, %d extraordinary points, "
-                                     "spokes G1 %.1e rad G2 %.1e, %.3f s%s\n" % (
-                                         obj.Label, self.obj.Label, rep["brep"]["faces"], len(rep["extraordinary_points"]),
-                                         rep["continuity"]["g1_spokes"], rep["continuity"]["g2_spokes"], rep["seconds"],
-                                         "".join("\n  warning: " + w for w in rep["warnings"])))
         self.obj.ViewObject.Visibility = False
-        self._close()
-        return True
-
-    def reject(self):
-        self._close()
-        return True
+        return ("HoleFill: G-NURBS surface %s over %s: %d B-rep faces, %d extraordinary points, spokes G1 %.1e rad G2 %.1e, %.3f s%s" % (
+            obj.Label, self.obj.Label, rep["brep"]["faces"], len(rep["extraordinary_points"]), rep["continuity"]["g1_spokes"],
+            rep["continuity"]["g2_spokes"], rep["seconds"], "".join("\n  warning: " + w for w in rep["warnings"])))

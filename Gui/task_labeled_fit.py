@@ -32,7 +32,7 @@ def remove_overlay():
     scene_overlay.remove(OVERLAY)
 
 
-class FitPanel:
+class FitPanel(task_dialog.Panel):
     def __init__(self, labelsObj):
         self.labels = labelsObj
         self.form = QtWidgets.QWidget()
@@ -167,26 +167,16 @@ class FitPanel:
             root.addChild(sep)
         scene_overlay.show(root)
 
-    # -- dialog ------------------------------------------------------------------------------
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def _close(self):
+    # -- dialog (task_dialog.Panel) --------------------------------------------------------------
+    def release(self):
         remove_overlay()
-        FreeCADGui.Control.closeDialog()
 
-    def accept(self):
-        import json
+    def make(self):
         import HoleFill
-        obj = task_dialog.create(self.status, lambda: HoleFill.makeLabeledFit(self.labels, **self.options()))
-        if obj is None:
-            return False
-        r = json.loads(obj.Report)
-        FreeCAD.Console.PrintMessage("HoleFill: labeled fit %s of %s: data max %.2e, %d weak control points, log10 condition %.1f\n" % (
-            obj.Label, self.labels.Source.Label, r["data_max"], r["weak_control_points"], r["log10_condition"]))
-        self._close()
-        return True
+        return HoleFill.makeLabeledFit(self.labels, **self.options())
 
-    def reject(self):
-        self._close()
-        return True
+    def made(self, obj):
+        import json
+        r = json.loads(obj.Report)
+        return "HoleFill: labeled fit %s of %s: data max %.2e, %d weak control points, log10 condition %.1f" % (
+            obj.Label, self.labels.Source.Label, r["data_max"], r["weak_control_points"], r["log10_condition"])

@@ -35,7 +35,7 @@ def remove_overlay():
     scene_overlay.remove(OVERLAY)
 
 
-class LabelPanel:
+class LabelPanel(task_dialog.Panel):
     def __init__(self, meshObj, existing=None, cornerAngle=35.0):
         from HoleFill.labeled import boundaryLoop, cornerSplits
         self.obj = meshObj
@@ -227,15 +227,11 @@ class LabelPanel:
         labeled = sum(1 for l in self.labels() if l != "-")
         self.status.setText(translate("HoleFill", "%d segments, %d labeled. OK stores the labels; then use Fit labeled surface.") % (len(self.segments()), labeled))
 
-    # -- dialog ------------------------------------------------------------------------------
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def _close(self):
+    # -- dialog (task_dialog.Panel; OK stores or edits the labels in one transaction) ---------------
+    def release(self):
         from pivy import coin
         self.view.removeEventCallbackPivy(coin.SoMouseButtonEvent.getClassTypeId(), self.callback)
         remove_overlay()
-        FreeCADGui.Control.closeDialog()
 
     def accept(self):
         import HoleFill
@@ -260,9 +256,5 @@ class LabelPanel:
             FreeCAD.Console.PrintError("HoleFill: %s\n" % e)
             return False
         FreeCAD.Console.PrintMessage("HoleFill: %s labels %s: %s\n" % (obj.Label, self.obj.Label, " ".join(l for l in labels)))
-        self._close()
-        return True
-
-    def reject(self):
-        self._close()
+        self.close()
         return True

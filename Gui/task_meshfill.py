@@ -34,7 +34,7 @@ def remove_overlay():
     scene_overlay.remove(OVERLAY)
 
 
-class MeshFillPanel:
+class MeshFillPanel(task_dialog.Panel):
     def __init__(self, obj):
         import HoleFill
         self.obj = obj
@@ -132,28 +132,22 @@ class MeshFillPanel:
         scene_overlay.show(root)
         self.status.setText(translate("HoleFill", "%d of %d holes will be filled into a new mesh object.") % (len(checked), len(self.holes)))
 
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+    # -- dialog (task_dialog.Panel) --------------------------------------------------------------
+    def release(self):
+        remove_overlay()
 
     def accept(self):
-        import HoleFill
-        holes = self.checked()
-        if not holes:
+        if not self.checked():
             self.status.setText(translate("HoleFill", "No hole is checked: check the holes to fill, or Cancel."))
             return False
-        feature = task_dialog.create(self.status, lambda: HoleFill.makeMeshFill(self.obj, holes=holes, maxBoundary=self.maxBoundary.value(), **SHAPES[self.shape.currentIndex()][1]))
-        if feature is None:
-            return False
+        return task_dialog.Panel.accept(self)
+
+    def make(self):
+        import HoleFill
+        return HoleFill.makeMeshFill(self.obj, holes=self.checked(), maxBoundary=self.maxBoundary.value(), **SHAPES[self.shape.currentIndex()][1])
+
+    def made(self, feature):
         import json
         rep = json.loads(feature.HoleFillReport)
-        FreeCAD.Console.PrintMessage("HoleFill: filled %d of %d holes of %s into %s (%s), %.3f s\n" % (
-            rep["filled"], rep["holes"], self.obj.Label, feature.Label, "closed" if rep["closed"] else "still open",
-            rep["seconds"]))
-        remove_overlay()
-        FreeCADGui.Control.closeDialog()
-        return True
-
-    def reject(self):
-        remove_overlay()
-        FreeCADGui.Control.closeDialog()
-        return True
+        return "HoleFill: filled %d of %d holes of %s into %s (%s), %.3f s" % (
+            rep["filled"], rep["holes"], self.obj.Label, feature.Label, "closed" if rep["closed"] else "still open", rep["seconds"])

@@ -36,7 +36,7 @@ def error_colour(t):
     return (min(1.0, 2 * t), min(1.0, 2 - 2 * t) if t > 0.5 else 2 * t, max(0.0, 1 - 2 * t))
 
 
-class FitPanel:
+class FitPanel(task_dialog.Panel):
     def __init__(self, source):
         import HoleFill
         self.source = source
@@ -169,27 +169,17 @@ class FitPanel:
             root.addChild(sep)
         scene_overlay.show(root)
 
-    # -- dialog ------------------------------------------------------------------------------
-    def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def _close(self):
+    # -- dialog (task_dialog.Panel) --------------------------------------------------------------
+    def release(self):
         remove_overlay()
-        FreeCADGui.Control.closeDialog()
 
-    def accept(self):
-        import json
+    def make(self):
         import HoleFill
-        obj = task_dialog.create(self.status, lambda: HoleFill.makePointCloudFit(self.source, **self.options()))
-        if obj is None:
-            return False
-        r = json.loads(obj.Report)
-        FreeCAD.Console.PrintMessage("HoleFill: point-cloud fit %s of %s: %d functions, max error %.3g mm, tolerance %s\n" % (
-            obj.Label, self.source.Label, r["iterations"][-1]["dof"], r["iterations"][-1]["max_error"] * r["diagonal"],
-            "met" if r["met_tolerance"] else "NOT met"))
-        self._close()
-        return True
+        return HoleFill.makePointCloudFit(self.source, **self.options())
 
-    def reject(self):
-        self._close()
-        return True
+    def made(self, obj):
+        import json
+        r = json.loads(obj.Report)
+        return "HoleFill: point-cloud fit %s of %s: %d functions, max error %.3g mm, tolerance %s" % (
+            obj.Label, self.source.Label, r["iterations"][-1]["dof"], r["iterations"][-1]["max_error"] * r["diagonal"],
+            "met" if r["met_tolerance"] else "NOT met")
