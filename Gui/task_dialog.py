@@ -27,8 +27,9 @@ def create(status, make):
 
 class Panel:
     """What HoleFill's task panels do alike: OK and Cancel buttons; Cancel closes the panel, and
-    so does an OK that made its object. Closing calls self.release() first (the panel's overlay
-    removed, its observers and callbacks given back). The plain OK makes the object with
+    so does an OK that made its object. Closing calls self.release() first: the panel's overlay
+    (scene_overlay's node named self.overlay) removed, and whatever else it holds given back
+    (observers, callbacks). The plain OK makes the object with
     self.make() through create() (the panel stays open, its self.status saying why, when that
     fails) and prints self.made(obj) (what the report view says of it; it may also hide the
     source) — panels whose OK does more override accept and close with self.close()."""
@@ -36,8 +37,12 @@ class Panel:
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
 
+    overlay = None
+
     def release(self):
-        pass
+        if self.overlay:
+            from HoleFillGui import scene_overlay
+            scene_overlay.remove(self.overlay)
 
     def close(self):
         self.release()

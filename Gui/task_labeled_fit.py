@@ -33,6 +33,8 @@ def remove_overlay():
 
 
 class FitPanel(task_dialog.Panel):
+    overlay = OVERLAY
+
     def __init__(self, labelsObj):
         self.labels = labelsObj
         self.form = QtWidgets.QWidget()
@@ -168,9 +170,6 @@ class FitPanel(task_dialog.Panel):
         scene_overlay.show(root)
 
     # -- dialog (task_dialog.Panel) --------------------------------------------------------------
-    def release(self):
-        remove_overlay()
-
     def make(self):
         import HoleFill
         return HoleFill.makeLabeledFit(self.labels, **self.options())

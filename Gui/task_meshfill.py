@@ -35,6 +35,8 @@ def remove_overlay():
 
 
 class MeshFillPanel(task_dialog.Panel):
+    overlay = OVERLAY
+
     def __init__(self, obj):
         import HoleFill
         self.obj = obj
@@ -133,9 +135,6 @@ class MeshFillPanel(task_dialog.Panel):
         self.status.setText(translate("HoleFill", "%d of %d holes will be filled into a new mesh object.") % (len(checked), len(self.holes)))
 
     # -- dialog (task_dialog.Panel) --------------------------------------------------------------
-    def release(self):
-        remove_overlay()
-
     def accept(self):
         if not self.checked():
             self.status.setText(translate("HoleFill", "No hole is checked: check the holes to fill, or Cancel."))

@@ -37,6 +37,8 @@ def error_colour(t):
 
 
 class FitPanel(task_dialog.Panel):
+    overlay = OVERLAY
+
     def __init__(self, source):
         import HoleFill
         self.source = source
@@ -170,9 +172,6 @@ class FitPanel(task_dialog.Panel):
         scene_overlay.show(root)
 
     # -- dialog (task_dialog.Panel) --------------------------------------------------------------
-    def release(self):
-        remove_overlay()
-
     def make(self):
         import HoleFill
         return HoleFill.makePointCloudFit(self.source, **self.options())
