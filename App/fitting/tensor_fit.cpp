@@ -127,7 +127,7 @@ struct PoleSolve {
 
 PoleSolve solvePoles(const BSplineSurface& s, const Eigen::SparseMatrix<double>& fairness, const Eigen::MatrixX3d& points,
                      const Eigen::MatrixX2d& uv, Eigen::Index regionRows, const TensorFitOptions& o) {
-  const int n = o.controlU * o.controlV;
+  const int nv = s.numV(), n = s.numU() * nv;
   std::vector<Eigen::Triplet<double>> T;
   std::vector<int> support(n, 0);
   const double extra = std::sqrt(o.extraWeight);  // on the rows past the region's, of B and of the points alike
@@ -138,7 +138,7 @@ PoleSolve solvePoles(const BSplineSurface& s, const Eigen::SparseMatrix<double>&
     const Eigen::MatrixXd Bu = basisDerivatives(s.knotsU, 3, su, uv(k, 0), 0), Bv = basisDerivatives(s.knotsV, 3, sv, uv(k, 1), 0);
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
-        const int pole = (su - 3 + a) * o.controlV + (sv - 3 + b);
+        const int pole = (su - 3 + a) * nv + (sv - 3 + b);
         T.emplace_back(static_cast<int>(k), pole, Bu(0, a) * Bv(0, b));
         ++support[pole];
       }
@@ -191,8 +191,18 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   TensorFitResult r;
   BSplineSurface& s = r.surface;
   s.degreeU = s.degreeV = 3;
-  s.knotsU = clampedUniformKnots(3, o.controlU - 3, u0, u1);
-  s.knotsV = clampedUniformKnots(3, o.controlV - 3, v0, v1);
+  const auto knots = [](const std::vector<double>& interior, int control, double a, double b) {
+    if (interior.empty()) return clampedUniformKnots(3, control - 3, a, b);
+    for (size_t k = 0; k < interior.size(); ++k)
+      if (!(interior[k] > 0 && interior[k] < 1 && (k == 0 || interior[k] > interior[k - 1])))
+        throw Error("the interior knots must ascend strictly inside the domain (fractions in (0, 1))");
+    std::vector<double> t(4, a);
+    for (double f : interior) t.push_back(a + f * (b - a));
+    t.insert(t.end(), 4, b);
+    return t;
+  };
+  s.knotsU = knots(o.knotsU, o.controlU, u0, u1);
+  s.knotsV = knots(o.knotsV, o.controlV, v0, v1);
   const double diagonal = std::max(1e-300, (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm());
   // Data error over the region's own vertices at their parameters: {max, rms} / diagonal.
   const auto dataError = [&](const BSplineSurface& f, const Eigen::MatrixX2d& ruv) {

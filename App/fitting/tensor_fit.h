@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <TopoDS_Face.hxx>
+#include <vector>
 
 #include "geometry/bspline_surface.h"
 #include "mesh/triangle_mesh.h"
@@ -36,6 +37,10 @@ struct TensorFitOptions {
   // region's. Samples on a grid finer than the region's edges weigh less, so that the extension
   // pulls per unit of area as the region does (labeled_fit.h).
   double extraWeight = 1;
+  // Interior knots as fractions of the domain, ascending and strictly inside (0, 1), where the
+  // knots are not uniform (labeled fitting inserts them where its fit misses, labeled_fit.h).
+  // Empty: the uniform knots of controlU (controlV); given, they decide that direction's count.
+  std::vector<double> knotsU, knotsV;
 };
 
 struct TensorFitResult {

@@ -444,6 +444,10 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     // Method 10: the untrimmed surface ending at the domain (reach 0), or reaching BENCH_FIT_REACH
     // of it past (the band around the region is the region's box grown by a tenth).
     if (method == 10) o.reach = std::getenv("BENCH_FIT_REACH") ? std::atof(std::getenv("BENCH_FIT_REACH")) : 0.0;
+    // BENCH_FIT_LOCAL=K: at most K knots inserted where the fit misses (LabeledFitOptions::localRefinements).
+    if (const char* local = std::getenv("BENCH_FIT_LOCAL")) o.localRefinements = std::atoi(local);
+    // BENCH_FIT_NOISY_MAX=N: refinement under scan noise stops at N control points a direction (noisyMaxControl).
+    if (const char* cap = std::getenv("BENCH_FIT_NOISY_MAX")) o.noisyMaxControl = std::atoi(cap);
     const LabeledFitResult r = fitLabeled(mesh, labels, o);
     if (method == 0 && std::getenv("BENCH_FIT_WHY")) {
       for (const std::string& line : r.refinements) std::fprintf(stderr, "  why: %s\n", line.c_str());

@@ -302,6 +302,35 @@ TEST(LabeledFit, ControlPointsAreRefinedUntilTheDataIsMet) {
   EXPECT_EQ(units.refinements, refined.refinements);
 }
 
+// Where the control net stops at its cap with the data still missed, knots go where the fit
+// misses: a narrow bump in one corner of a flat square, which 8 × 8 uniform control points cut
+// off, is followed by knots inserted around it, the spans there narrower than elsewhere.
+TEST(LabeledFit, KnotsAreInsertedWhereTheFitStillMissesAtItsCap) {
+  Eigen::MatrixX2d truth;
+  const TriangleMesh region = testregions::gridRegion(
+      40, 40, 1.0 / 40, [](double, double) { return true; },
+      [](double x, double y) { return Eigen::Vector3d(x, y, 0.05 * std::exp(-(std::pow(x - 0.75, 2) + std::pow(y - 0.3, 2)) / 0.004)); }, truth);
+  const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
+  LabeledFitOptions o;
+  o.fit.controlU = o.fit.controlV = 6;
+  o.maxControl = 8;
+  o.localRefinements = 0;
+  const LabeledFitResult capped = fitLabeled(region, labels, o);
+  o.localRefinements = 8;
+  const LabeledFitResult local = fitLabeled(region, labels, o);
+  EXPECT_GT(capped.fit.dataMax, 1e-3);
+  EXPECT_LT(local.fit.dataMax, 0.5 * capped.fit.dataMax) << local.refinements.back();
+  EXPECT_GT(local.refinementsKept, capped.refinementsKept);
+  EXPECT_EQ(local.fit.weakControlPoints, 0);
+  const auto spans = [](const std::vector<double>& k) {
+    double lo = 1e300, hi = 0;
+    for (size_t i = 4; i + 4 < k.size() + 1; ++i)
+      if (k[i] > k[i - 1]) lo = std::min(lo, k[i] - k[i - 1]), hi = std::max(hi, k[i] - k[i - 1]);
+    return hi / lo;
+  };
+  EXPECT_GT(spans(local.fit.surface.knotsU), 1.5);  // not uniform: split where the bump is
+}
+
 // Control points stop being added where what the fit leaves is the scan noise (the discrepancy
 // principle): the region's noise is estimated from the mesh alone, and a fit whose data rms is
 // within 1.5 times it is kept. The same region clean is refined further, while its max falls.
@@ -342,6 +371,7 @@ TEST(LabeledFit, UnderNoiseRefinementStopsAtNoisyMaxControlAndCleanGoesOn) {
   o.fit.controlU = o.fit.controlV = 5;
   o.noisyMaxControl = 8;
   o.maxControl = 12;
+  o.localRefinements = 0;  // the clean one would go on with knots where it misses (the next tests)
   const LabeledFitResult clean = fitLabeled(region, labels, o);
   testregions::addNoise(region, 0.002, 3);
   const LabeledFitResult noisy = fitLabeled(region, labels, o);
@@ -517,6 +547,9 @@ TEST(LabeledFit, AnLWhoseLabeledMapIsSingularIsFittedWithTheLabelsRelaxed) {
     const std::vector<LabeledSegment> labels = testregions::boundingBoxLabels(region, truth);
     LabeledFitOptions o;
     o.relaxLabels = false;
+    // Knots inserted where the held map's fit misses make it meet the L (5.1e-4, no weak control
+    // point): without them, the relaxed map is what repairs it.
+    o.localRefinements = 0;
     const LabeledFitResult held = fitLabeled(region, labels, o);
     EXPECT_TRUE(!held.metTolerance || held.fit.weakControlPoints > 0);
     EXPECT_FALSE(held.labelsRelaxed);

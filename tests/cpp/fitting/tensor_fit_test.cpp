@@ -99,6 +99,34 @@ TEST(TensorFit, AnEllipticRegionWithItsExtensionHasNoWeakControlPointsAndABetter
   EXPECT_TRUE(with.valid);
 }
 
+// Interior knots where they are wanted: a truth whose knots are not uniform (a knot pair close
+// to u = 1) is reproduced on its own knots, where uniform knots as many miss it.
+TEST(TensorFit, NonUniformKnotsReproduceASurfaceOnTheirKnots) {
+  BSplineSurface t;
+  t.knotsU = {0, 0, 0, 0, 0.8, 1.0, 1.2, 2.5, 4, 4, 4, 4};  // 8 poles along u
+  t.knotsV = clampedUniformKnots(3, 2, 0, 2);
+  t.poles.resize(40, 3);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 5; ++j) t.poles.row(i * 5 + j) << 4.0 * i / 7, 2.0 * j / 4, (i == 2 ? 0.6 : 0.0) + 0.1 * std::cos(1.3 * j);
+  Eigen::MatrixX2d uv;
+  const TriangleMesh whole = region(t, [](double, double) { return true; }, uv);
+  TensorFitOptions o;
+  o.controlU = 8;
+  o.controlV = 5;
+  o.smoothing = 0;
+  const TensorFitResult uniform = fitTensorProduct(whole.vertices, uv, whole, uv, o);
+  o.knotsU = {0.2, 0.25, 0.3, 0.625};  // t's interior knots over [0, 4]
+  const TensorFitResult placed = fitTensorProduct(whole.vertices, uv, whole, uv, o);
+  EXPECT_EQ(placed.surface.numU(), 8);
+  EXPECT_EQ(placed.surface.knotsU, t.knotsU);
+  EXPECT_LT(placed.dataMax, 1e-12);
+  EXPECT_GT(uniform.dataMax, 1e-3);
+  o.knotsU = {0.3, 0.2};
+  EXPECT_THROW(fitTensorProduct(whole.vertices, uv, whole, uv, o), Error);
+  o.knotsU = {0.0, 0.5};
+  EXPECT_THROW(fitTensorProduct(whole.vertices, uv, whole, uv, o), Error);
+}
+
 TEST(TensorFit, RefusesBadInput) {
   const BSplineSurface t = truth();
   Eigen::MatrixX2d uv;
