@@ -2,6 +2,8 @@
 // parameterization on the guiding frame's rectangle (labeled_parameterization.h), extension of
 // the region to that rectangle (domain_extension.h), and the cubic tensor-product fit trimmed by
 // the region's boundary (tensor_fit.h). `extend = false` fits the region alone, for comparison.
+// The control net is chosen by the data: refined while the fit misses and what is left is not
+// scan noise, then, on a clean region, knots inserted where it still misses (localRefinements).
 #pragma once
 
 #include "geometry/outcome.h"
