@@ -34,10 +34,10 @@ class Panel:
     fails) and prints self.made(obj) (what the report view says of it; it may also hide the
     source) — panels whose OK does more override accept and close with self.close()."""
 
+    overlay = None
+
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    overlay = None
 
     def release(self):
         if self.overlay:

@@ -57,6 +57,8 @@ class _Status:
 
 
 class FillTaskPanel(task_dialog.Panel):
+    overlay = OVERLAY
+
     def __init__(self, existing=None):
         self.doc = FreeCAD.ActiveDocument
         self.obj = existing
@@ -258,4 +260,4 @@ class FillTaskPanel(task_dialog.Panel):
     def release(self):
         from HoleFillGui import projection_overlay
         projection_overlay.hide()
-        scene_overlay.remove(OVERLAY)
+        task_dialog.Panel.release(self)

@@ -42,6 +42,8 @@ class _EdgeClicks:
 
 
 class GnurbsPanel(task_dialog.Panel):
+    overlay = OVERLAY
+
     def __init__(self, obj, sharpEdges=(), anchors=None, knots=()):
         import HoleFill
         self.obj = obj
@@ -168,7 +170,7 @@ class GnurbsPanel(task_dialog.Panel):
     # -- dialog (task_dialog.Panel) --------------------------------------------------------------
     def release(self):
         FreeCADGui.Selection.removeObserver(self.observer)
-        remove_overlay()
+        task_dialog.Panel.release(self)
 
     def make(self):
         import HoleFill

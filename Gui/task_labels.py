@@ -36,6 +36,8 @@ def remove_overlay():
 
 
 class LabelPanel(task_dialog.Panel):
+    overlay = OVERLAY
+
     def __init__(self, meshObj, existing=None, cornerAngle=35.0):
         from HoleFill.labeled import boundaryLoop, cornerSplits
         self.obj = meshObj
@@ -231,7 +233,7 @@ class LabelPanel(task_dialog.Panel):
     def release(self):
         from pivy import coin
         self.view.removeEventCallbackPivy(coin.SoMouseButtonEvent.getClassTypeId(), self.callback)
-        remove_overlay()
+        task_dialog.Panel.release(self)
 
     def accept(self):
         import HoleFill

@@ -257,12 +257,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     return f;
   };
   for (int step = 0; o.maxControl > 0 && !noisy && !noiseLeft && step < o.localRefinements && r.fit.dataMax > o.relativeTolerance; ++step) {
-    Eigen::Index worst = 0;
-    double far = -1;
-    for (Eigen::Index i = 0; i < region.vertices.rows(); ++i) {
-      const double d = (r.fit.surface.point(r.fit.regionUV(i, 0), r.fit.regionUV(i, 1)) - region.vertices.row(i).transpose()).norm();
-      if (d > far) far = d, worst = i;
-    }
+    const Eigen::Index worst = r.fit.dataMaxAt;
     const BSplineSurface& s = r.fit.surface;
     const double fu = (r.fit.regionUV(worst, 0) - s.knotsU.front()) / (s.knotsU.back() - s.knotsU.front());
     const double fv = (r.fit.regionUV(worst, 1) - s.knotsV.front()) / (s.knotsV.back() - s.knotsV.front());
@@ -307,10 +302,7 @@ LabeledFitResult fitLabeled(const TriangleMesh& region, const std::vector<Labele
   const auto t0 = std::chrono::steady_clock::now();
   checkLabeledFitOptions(options);
   LabeledFitOptions o = options;
-  if (o.tolerance > 0 && region.vertices.rows() > 0) {
-    const double diagonal = (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm();
-    if (diagonal > 0) o.relativeTolerance = o.tolerance / diagonal;
-  }
+  if (const double diagonal = boundingDiagonal(region.vertices); o.tolerance > 0 && diagonal > 0) o.relativeTolerance = o.tolerance / diagonal;
   const LabeledParameterization labeled = parameterizeLabeled(region, segments, o.parameterization);
   LabeledFitResult r;
   try {

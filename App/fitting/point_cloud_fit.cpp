@@ -8,6 +8,7 @@
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "geometry/occt_bridge.h"
+#include "mesh/triangle_mesh.h"
 
 namespace holefill {
 
@@ -41,10 +42,7 @@ PointCloudFitResult fitPointCloud(const FlaggedCloud& cloud, const PointCloudFit
   r.completion = completeCloudBoundary(r.cloud, o.corners);
   r.parameterization = parameterizeCloud(r.cloud.points, r.cloud.boundary, r.cloud.uv, o.parameterization);
   if (!o.adaptive) f.maxLevels = 1;
-  if (o.tolerance > 0 && r.cloud.points.rows() > 0) {
-    const double diagonal = (r.cloud.points.colwise().maxCoeff() - r.cloud.points.colwise().minCoeff()).norm();
-    if (diagonal > 0) f.relativeTolerance = o.tolerance / diagonal;
-  }
+  if (const double diagonal = boundingDiagonal(r.cloud.points); o.tolerance > 0 && diagonal > 0) f.relativeTolerance = o.tolerance / diagonal;
   r.fit = fitThb(r.cloud.points, r.parameterization.uv, f);
   r.shape = o.cellFaces ? thbCellFaces(r.fit.space, r.fit.surface) : TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(r.fit.surface), 1e-7).Face());
   return r;

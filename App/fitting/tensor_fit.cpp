@@ -204,22 +204,24 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
   s.knotsU = knots(o.knotsU, o.controlU, u0, u1);
   s.knotsV = knots(o.knotsV, o.controlV, v0, v1);
   const double diagonal = std::max(1e-300, (region.vertices.colwise().maxCoeff() - region.vertices.colwise().minCoeff()).norm());
-  // Data error over the region's own vertices at their parameters: {max, rms} / diagonal.
+  // Data error over the region's own vertices at their parameters: {max, rms} / diagonal, and
+  // the vertex of the max.
   const auto dataError = [&](const BSplineSurface& f, const Eigen::MatrixX2d& ruv) {
     double mx = 0, sum = 0;
+    Eigen::Index at = 0;
     for (Eigen::Index k = 0; k < nr; ++k) {
       const double d = (f.point(ruv(k, 0), ruv(k, 1)) - region.vertices.row(k).transpose()).norm() / diagonal;
-      mx = std::max(mx, d);
+      if (d > mx) mx = d, at = k;
       sum += d * d;
     }
-    return std::pair<double, double>{mx, std::sqrt(sum / std::max<Eigen::Index>(1, nr))};
+    return std::tuple<double, double, Eigen::Index>{mx, std::sqrt(sum / std::max<Eigen::Index>(1, nr)), at};
   };
   Eigen::MatrixX2d fitUV = uv;
   r.regionUV = regionUV;
   const Eigen::SparseMatrix<double> fairness = fairnessMatrix(3, s.knotsU, 3, s.knotsV, FairnessWeights{1.0, 0.0});
   PoleSolve solved = solvePoles(s, fairness, points, fitUV, nr, o);
   s.poles = solved.poles;
-  std::tie(r.dataMax, r.dataRms) = dataError(s, r.regionUV);
+  std::tie(r.dataMax, r.dataRms, r.dataMaxAt) = dataError(s, r.regionUV);
   const MeshHoleReport holes = findMeshHoles(region);
   if (holes.holes.empty()) throw Error("the region has no boundary to trim by");
   if (o.parameterCorrections > 0) {
@@ -258,7 +260,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
       BSplineSurface trial = s;
       PoleSolve again = solvePoles(trial, fairness, points, nextFit, nr, o);
       trial.poles = again.poles;
-      const auto [mx, rms] = dataError(trial, next);
+      const auto [mx, rms, at] = dataError(trial, next);
       if (!(rms < r.dataRms)) break;
       s = std::move(trial);
       solved = std::move(again);
@@ -266,6 +268,7 @@ TensorFitResult fitTensorProduct(const Eigen::MatrixX3d& points, const Eigen::Ma
       r.regionUV = std::move(next);
       r.dataMax = mx;
       r.dataRms = rms;
+      r.dataMaxAt = at;
       ++r.correctionRounds;
     }
   }

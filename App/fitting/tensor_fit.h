@@ -50,6 +50,7 @@ struct TensorFitResult {
   Eigen::MatrixX2d regionUV;          // the region vertices' parameters the face is trimmed at (corrected)
   int correctionRounds = 0;           // parameter corrections taken
   double dataMax = 0, dataRms = 0;    // region vertices to the surface at their parameters / region diagonal
+  Eigen::Index dataMaxAt = 0;         // the region vertex that is dataMax off
   int weakControlPoints = 0;
   double log10Condition = 0;          // of the points' own normal matrix BᵀB, unweighted and without the thin plate (infinite when singular)
 };

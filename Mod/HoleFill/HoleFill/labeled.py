@@ -265,10 +265,10 @@ class LabeledFitFeature(ParametricFeature):
         lab = obj.Labels
         if lab is None or not hasattr(lab, "LabelsJson") or lab.Source is None:
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
-        face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, (obj.ControlPointsU, obj.ControlPointsV), obj.Extension,
-                                          obj.Margin, obj.Fairness, obj.Smoothing, obj.FramePlacement, obj.MeshFairness,
-                                          obj.MaxControlPoints, float(obj.Tolerance), obj.ReleaseDepth, obj.RelaxLabels, obj.Reach,
-                                          obj.Isocurves, obj.RelativeTolerance)
+        # The options by name, as FIT_PROPERTIES maps them (fitLabeled takes the two counts as one pair).
+        options = {name: getattr(obj, prop) for prop, name in FIT_PROPERTIES.items() if name not in ("controlU", "controlV")}
+        face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, controlPoints=(obj.ControlPointsU, obj.ControlPointsV),
+                                          **options)
         obj.Shape = face
         obj.Untrimmed = untrimmed
         for k in ("uv", "frame", "extended"):

@@ -149,9 +149,7 @@ class PointCloudFitFeature(ParametricFeature):
     def execute(self, obj):
         if obj.Source is None:
             raise HoleFillApp.HoleFillError("the point-cloud fit has no source")
-        face, rep = fitPoints(_sourcePoints(obj.Source), method=obj.Method, tolerance=float(obj.Tolerance),
-                              relativeTolerance=obj.RelativeTolerance, degree=obj.Degree, adaptive=obj.Adaptive,
-                              iterations=obj.Iterations, weights=obj.Weights)
+        face, rep = fitPoints(_sourcePoints(obj.Source), **{name: getattr(obj, prop) for prop, name in POINT_FIT_PROPERTIES.items()})
         obj.Shape = face
         obj.Report = json.dumps({k: v for k, v in rep.items() if k not in ("uv", "errors", "cells", "boundary")})
 
