@@ -58,3 +58,28 @@ def face_node(face, name, rgb, transparency, tolerance=None):
     for nd in (hints, mat, coords, faces):
         sep.addChild(nd)
     return sep
+
+
+def polyline_node(name, polylines, rgb, width):
+    """A separator named `name` drawing each polyline (a list of (x, y, z)) in colour `rgb`,
+    `width` pixels wide, unlit and drawn over the faces it runs along (a hole's edges lie on the
+    model's faces, and would flicker through them)."""
+    from pivy import coin
+    sep = coin.SoSeparator()
+    sep.setName(name)
+    depth = coin.SoDepthBuffer()
+    depth.function = coin.SoDepthBuffer.LEQUAL
+    light = coin.SoLightModel()
+    light.model = coin.SoLightModel.BASE_COLOR
+    col = coin.SoBaseColor()
+    col.rgb.setValue(*rgb)
+    style = coin.SoDrawStyle()
+    style.lineWidth = width
+    coords = coin.SoCoordinate3()
+    pts = [list(p) for line in polylines for p in line]
+    coords.point.setValues(0, len(pts), pts)
+    lines = coin.SoLineSet()
+    lines.numVertices.setValues(0, len(polylines), [len(line) for line in polylines])
+    for nd in (depth, light, col, style, coords, lines):
+        sep.addChild(nd)
+    return sep

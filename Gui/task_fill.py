@@ -47,6 +47,16 @@ def formatReport(report):
 
 EDGE_CHOICES = ("auto", "G0", "G1", "G2")  # auto: the panel's continuity, G0 where a crease is found
 OVERLAY = "HoleFillFillPreview"
+LOOP = "HoleFillFillLoop"       # the hole's loop, drawn while the panel is open
+# The loop before a Preview, and after it the edges that reach what they were asked and those that
+# miss it: none of them FreeCAD's preselection yellow or selection green.
+COLOR_LOOP, COLOR_MET, COLOR_MISSED = (0.85, 0.15, 0.85), (0.15, 0.45, 0.95), (0.90, 0.10, 0.10)
+TIERS = ("none",) + tuple(HoleFill.CONTINUITIES)
+
+
+def _missed(edge):
+    """Whether an edge_continuity entry of a report reached less than it was asked."""
+    return TIERS.index(edge["reached"]) < TIERS.index(edge["asked"])
 
 
 class _Status:
@@ -102,6 +112,21 @@ class FillTaskPanel(task_dialog.Panel):
         lay.addRow(translate("HoleFill", "Output:"), self.output)
         self.preview = QtWidgets.QPushButton(translate("HoleFill", "Preview"))
         lay.addRow(self.preview)
+        # What a Preview that reaches no tier means, in words, with what else reaches one.
+        self.verdict = QtWidgets.QLabel()
+        self.verdict.setWordWrap(True)
+        self.verdict.setObjectName("HoleFillFillVerdict")
+        self.verdict.hide()
+        lay.addRow(self.verdict)
+        self.alternativesBox = QtWidgets.QWidget()
+        self.alternativesBox.setLayout(QtWidgets.QVBoxLayout())
+        self.alternativesBox.layout().setContentsMargins(0, 0, 0, 0)
+        lay.addRow(self.alternativesBox)
+        self.keepAnyway = QtWidgets.QCheckBox(translate("HoleFill", "Keep a fill that reaches no tier"))
+        self.keepAnyway.setToolTip(translate("HoleFill", "OK keeps a fill that meets none of G0, G1, G2 only when this is ticked; "
+                                             "it is marked with a warning sign in the tree"))
+        self.keepAnyway.hide()
+        lay.addRow(self.keepAnyway)
         self.report = QtWidgets.QPlainTextEdit()
         self.report.setReadOnly(True)
         self.report.setMinimumHeight(140)
@@ -158,7 +183,9 @@ class FillTaskPanel(task_dialog.Panel):
         if hole is None:
             self.holeLabel.setText(translate("HoleFill", "%s: %s is not on one hole loop") % (self.source.Label, ", ".join(self.edges)))
             self.edgeTable.setRowCount(0)
+            scene_overlay.remove(LOOP)
         else:
+            self.drawLoop(hole["edges"])
             self.holeLabel.setText(translate("HoleFill", "%s: %d-sided hole, %d edges (%s)") % (
                 self.source.Label, hole["corners"], len(hole["edges"]), ", ".join(hole["edges"])))
             if [self.edgeTable.item(r, 0).text() for r in range(self.edgeTable.rowCount())] != hole["edges"]:
@@ -172,6 +199,27 @@ class FillTaskPanel(task_dialog.Panel):
                     self.edgeTable.setCellWidget(row, 1, ask)
                     self.edgeTable.setItem(row, 2, QtWidgets.QTableWidgetItem(""))
 
+    def drawLoop(self, edges, report=None):
+        """The hole's loop over the model: in one colour before a Preview; after it, the edges that
+        reach what they were asked in another and those that miss it in red (report given)."""
+        scene_overlay.remove(LOOP)
+        if not FreeCAD.GuiUp or FreeCADGui.ActiveDocument is None or self.source is None:
+            return
+        missed = {"Edge%d" % e["edge"] for e in (report or {}).get("edge_continuity", []) if _missed(e)}
+        groups = {}
+        for name in edges:
+            edge = self.source.Shape.getElement(name)
+            color = COLOR_LOOP if report is None else (COLOR_MISSED if name in missed else COLOR_MET)
+            deflection = 0.002 * max(edge.BoundBox.DiagonalLength, 1e-9)
+            groups.setdefault(color, []).append([(p.x, p.y, p.z) for p in edge.discretize(Deflection=deflection)])
+        root = scene_overlay.placed_root(LOOP, self.placement())
+        for k, (color, lines) in enumerate(sorted(groups.items())):
+            root.addChild(scene_overlay.polyline_node("%s_%d" % (LOOP, k), lines, color, 5 if color == COLOR_MISSED else 4))
+        scene_overlay.show(root)
+
+    def placement(self):
+        return self.source.getGlobalPlacement() if hasattr(self.source, "getGlobalPlacement") else self.source.Placement
+
     def edgeRequests(self):
         """The Ask column as EdgeContinuity entries (["Edge5=G0", ...]; auto rows are left out)."""
         out = []
@@ -183,11 +231,66 @@ class FillTaskPanel(task_dialog.Panel):
 
     def showReport(self, report):
         self.report.setPlainText(formatReport(report))
+        self.showVerdict(report)
+        if report.get("edges"):
+            self.drawLoop(["Edge%d" % e for e in report["edges"]], report)
         per = {"Edge%d" % e["edge"]: e for e in report.get("edge_continuity", [])}
         for row in range(self.edgeTable.rowCount()):
             e = per.get(self.edgeTable.item(row, 0).text())
             text = "" if e is None else "%s (%s) / %s" % (e["asked"], e["source"], e["reached"])
             self.edgeTable.setItem(row, 2, QtWidgets.QTableWidgetItem(text))
+
+    def showVerdict(self, report, alternatives=None):
+        """Above the report: a fill that reaches no tier said in words (how far its patch spans past
+        the hole, the edges that miss, in red in the 3D view), what else reached one (a button
+        each, which previews it), and that OK keeps it only when 'Keep' is ticked."""
+        for child in self.alternativesBox.findChildren(QtWidgets.QPushButton):
+            child.setParent(None)
+        none = report["achieved"] == "none"
+        self.keepAnyway.setVisible(none)
+        if not none:
+            self.keepAnyway.setChecked(False)
+            short = TIERS.index(report["achieved"]) < TIERS.index(report["requested"])
+            self.verdict.setVisible(short)
+            self.verdict.setStyleSheet("")
+            self.verdict.setText(translate("HoleFill", "Reached %s of the %s asked; the edges in red miss it.") % (
+                report["achieved"], report["requested"]) if short else "")
+            return
+        missed = ["Edge%d" % e["edge"] for e in report.get("edge_continuity", []) if _missed(e)]
+        text = translate("HoleFill", "No continuity tier reached (%s asked); the edges in red miss (%s).") % (
+            report["requested"], ", ".join(missed) or "-")
+        # Which tier and by how much: a gap along the loop over the strict G0 tolerance (1e-6 of the
+        # hole by default) leaves no tier even where the tangents meet.
+        worst = max(report.get("per_edge", []), key=lambda e: e["g0"], default=None)
+        tolerance = report.get("g0_tolerance", 0)
+        if worst is not None and tolerance > 0 and worst["g0"] > tolerance:
+            text += " " + translate("HoleFill", "The gap along Edge%d is %.2g, %.0f times the G0 tolerance %.2g") % (
+                worst["edge"], worst["g0"], worst["g0"] / tolerance, tolerance)
+            bent = max((e["g1"] for e in report.get("per_edge", []) if "Edge%d" % e["edge"] in missed), default=0.0)
+            text += translate("HoleFill", "; the normals there meet within %.1e rad.") % bent
+        if report.get("str", {}).get("g0_loose"):
+            text += " " + translate("HoleFill", "It still sews within the model's edge tolerances.")
+        if alternatives:
+            text += " " + translate("HoleFill", "These reach a tier:")
+            for a in alternatives[:3]:
+                b = QtWidgets.QPushButton(translate("HoleFill", "Use %s at %s: %s, gap %.1g") % (
+                    a["method"], a["continuity"], a["achieved"], a["g0"]))
+                b.setToolTip(translate("HoleFill", "Preview the %s parameterization at %s: it reaches %s, with a largest gap of %.3g "
+                                       "along the loop and normals within %.2g rad") % (a["method"], a["continuity"], a["achieved"], a["g0"], a["g1"]))
+                b.setObjectName("HoleFillFillAlternative")
+                b.clicked.connect(lambda checked=False, a=a: self.useAlternative(a))
+                self.alternativesBox.layout().addWidget(b)
+        elif alternatives is not None:
+            text += " " + translate("HoleFill", "No other method or lower continuity reaches one either: check the hole's edges.")
+        text += " " + translate("HoleFill", "OK keeps it only with 'Keep a fill that reaches no tier' ticked.")
+        self.verdict.setText(text)
+        self.verdict.setStyleSheet("QLabel { color: #b00000; font-weight: bold; }")
+        self.verdict.show()
+
+    def useAlternative(self, alternative):
+        self.method.setCurrentText(alternative["method"])
+        self.continuity.setCurrentText(alternative["continuity"])
+        self.runPreview()
 
     def updateProjection(self, *args):
         from HoleFillGui import projection_overlay
@@ -233,8 +336,14 @@ class FillTaskPanel(task_dialog.Panel):
             return False
         self.previewed = ((options, output), face, report)
         self.showReport(report)
-        root = scene_overlay.placed_root(OVERLAY, self.source.getGlobalPlacement() if hasattr(self.source, "getGlobalPlacement")
-                                         else self.source.Placement)
+        if report["achieved"] == "none":
+            # What reaches a tier instead, measured on the same prepared hole (the other methods,
+            # then lower continuities), with progress and Cancel.
+            others = {k: v for k, v in options.items() if k not in ("method", "continuity")}
+            with task_dialog.progress_dialog(translate("HoleFill", "Trying other methods..."), self.form) as progress:
+                found = self.prepared().alternatives(options["method"], options["continuity"], progress=progress, **others)
+            self.showVerdict(report, found)
+        root = scene_overlay.placed_root(OVERLAY, self.placement())
         root.addChild(scene_overlay.face_node(face, OVERLAY + "Face", (0.95, 0.62, 0.20), 0.15))
         scene_overlay.show(root)
         return True
@@ -243,6 +352,11 @@ class FillTaskPanel(task_dialog.Panel):
         if self.previewed is None or self.previewed[0] != (self.options(), self.output.currentText()):
             if not self.runPreview():
                 return False  # keep the panel open: the report says what went wrong
+        if self.previewed[2]["achieved"] == "none" and not self.keepAnyway.isChecked():
+            # A plain OK never keeps a fill that reaches no tier (its patch may bulge far past
+            # the hole): the panel stays open with what else works.
+            self.verdict.setText(self.verdict.text() + "\n" + translate("HoleFill", "Not kept: choose one of the fills above, or tick 'Keep a fill that reaches no tier'."))
+            return False
         options, output = self.previewed[0]
         if self.obj is None:
             obj = task_dialog.create(_Status(self.report), lambda: fill_feature.makeFill(
@@ -260,4 +374,5 @@ class FillTaskPanel(task_dialog.Panel):
     def release(self):
         from HoleFillGui import projection_overlay
         projection_overlay.hide()
+        scene_overlay.remove(LOOP)
         task_dialog.Panel.release(self)

@@ -39,7 +39,16 @@ class FillViewProvider(_EditInPanel):
         self.Object = vobj.Object
 
     def getIcon(self):
+        # A fill that reaches no continuity tier (kept by the user anyway: the Fill panel asks)
+        # carries a warning sign in the tree, so that it is not taken for a good one later.
+        obj = getattr(self, "Object", None)
+        if obj is not None and getattr(obj, "Achieved", "") == "none":
+            return HoleFillGui.icon("HoleFill_FillWarning.svg")
         return HoleFillGui.icon("HoleFill_Fill.svg")
+
+    def updateData(self, obj, prop):
+        if prop == "Achieved" and obj.ViewObject is not None and hasattr(obj.ViewObject, "signalChangeIcon"):
+            obj.ViewObject.signalChangeIcon()
 
     def claimChildren(self):
         return []

@@ -206,6 +206,31 @@ def test_prepared_hole_is_filled_again_from_what_it_kept():
     fcharness.expect_error(lambda: prepared.fill(method="nope"), "method must be one of")
 
 
+def test_alternatives_name_the_fills_that_reach_a_tier_where_one_reaches_none():
+    # OCCT's crank arm without its face 28 (a cylinder strip between a crease and three smooth
+    # edges): the nearest-plane fill leaves a gap along the loop 60 times the strict G0
+    # tolerance and reaches no tier; the other methods, and G0, reach theirs.
+    crank = Part.Shape()
+    crank.read("/usr/share/opencascade/data/occ/CrankArm.brep")
+    faces = crank.Solids[1].Faces
+    shape = Part.Shell([f for j, f in enumerate(faces) if j != 27])
+    prepared = HoleFill.prepareHole(shape, HoleFill.findHoles(shape)[0])
+    _, _, failing = prepared.fill(method="np", continuity="G1", sewn=False)
+    assert failing["achieved"] == "none" and failing["g0"] > 10 * failing["g0_tolerance"], failing["message"]
+    found = prepared.alternatives("np", "G1")
+    assert found, "no alternative reaches a tier"
+    assert all(a["achieved"] != "none" and (a["method"], a["continuity"]) != ("np", "G1") for a in found), found
+    assert found[0]["continuity"] == "G1" and found[0]["achieved"] == "G1", found[0]
+    ranks = ["none", "G0", "G1", "G2"]
+    assert [ranks.index(a["achieved"]) for a in found] == sorted((ranks.index(a["achieved"]) for a in found), reverse=True)
+    # Each is what a fill with its settings gives; the hole's last fill is still the failing one.
+    again = HoleFill.fillHole(shape, HoleFill.findHoles(shape)[0], method=found[0]["method"], continuity="G1", sewn=False).report
+    assert again["achieved"] == found[0]["achieved"] and abs(again["g0"] - found[0]["g0"]) <= 1e-12 * failing["scale"]
+    assert json.loads(prepared._last[0][0])["method"] == "np"
+    # Cancelled at once: nothing tried.
+    assert prepared.alternatives("np", "G1", progress=lambda f: False) == []
+
+
 def test_make_fill_preview_reuses_the_prepared_hole():
     doc = FreeCAD.newDocument("HoleFillPrepared")
     src = doc.addObject("Part::Feature", "Panel")

@@ -106,3 +106,36 @@ def task_ok_button():
         if bb.isVisible() and b is not None and b.isVisible():
             return b
     raise AssertionError("no OK button")
+
+
+def visible_hole_edge(view, obj, edge_names):
+    """(name, screen x, screen y) of the first of `edge_names` whose midpoint the view shows
+    unhidden (a click there picks that edge); (None, 0, 0) when none is."""
+    from PySide2 import QtCore
+    vp = view.graphicsView().viewport()
+    for name in edge_names:
+        e = obj.Shape.getElement(name)
+        mid = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+        sx, sy = view.getPointOnScreen(mid)
+        info = view.getObjectInfo((sx, sy))
+        if info and info.get("Component") == name:
+            g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
+            return name, g.x(), g.y()
+    return None, 0, 0
+
+
+def click_button(button):
+    """A real mouse click at the button's centre (xdotool), scrolled into view first when it sits
+    in a scroll area (a task panel taller than the Combo View)."""
+    import subprocess
+    from PySide2 import QtWidgets
+    parent = button.parentWidget()
+    while parent is not None:
+        if isinstance(parent, QtWidgets.QScrollArea):
+            parent.ensureWidgetVisible(button)
+            pump(200)
+        parent = parent.parentWidget()
+    g = button.mapToGlobal(button.rect().center())
+    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
+    pump(200)
+    subprocess.run(["xdotool", "click", "1"], check=True)

@@ -8,30 +8,9 @@ import subprocess
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide2 import QtWidgets
 
 import guiharness as h
-
-
-def visible_hole_edge(view, obj, edge_names):
-    vp = view.graphicsView().viewport()
-    for name in edge_names:
-        e = obj.Shape.getElement(name)
-        mid = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
-        sx, sy = view.getPointOnScreen(mid)
-        info = view.getObjectInfo((sx, sy))
-        if info and info.get("Component") == name:
-            g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
-            return name, g.x(), g.y()
-    return None, 0, 0
-
-
-def click_button(button):
-    """A real mouse click at the button's centre (xdotool)."""
-    g = button.mapToGlobal(button.rect().center())
-    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
-    h.pump(200)
-    subprocess.run(["xdotool", "click", "1"], check=True)
 
 
 def overlay_present(name):
@@ -51,7 +30,7 @@ def body():
     view.fitAll()
     h.pump(500)
     hole = HoleFill.findHoles(src.Shape)[0]
-    name, x, y = visible_hole_edge(view, src, hole.edges)
+    name, x, y = h.visible_hole_edge(view, src, hole.edges)
     assert name, "no hole edge visible at its midpoint"
     h.log("clicking %s at %d,%d" % (name, x, y))
     FreeCADGui.Selection.clearSelection()
@@ -107,7 +86,7 @@ def body():
     # the second Preview reuses the hole the first one read (issue 20: the precompute/solve split).
     previews = [b for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible() and b.text() == "Preview"]
     assert len(previews) == 1, [b.text() for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible()]
-    click_button(previews[0])
+    h.click_button(previews[0])
     h.pump(1500)
     assert not [o for o in doc.Objects if o.Name.startswith("Fill")], "a Preview added to the document"
     assert overlay_present("HoleFillFillPreview"), "no preview overlay"
@@ -116,7 +95,7 @@ def body():
     assert len(combos) == 1, len(combos)
     combos[0].setCurrentText("G2")
     h.pump(200)
-    click_button(previews[0])
+    h.click_button(previews[0])
     h.pump(3000)
     reports = [w.toPlainText() for w in mw.findChildren(QtWidgets.QPlainTextEdit) if w.isVisible()]
     assert any("Requested G2" in t for t in reports), reports

@@ -223,6 +223,38 @@ class PreparedHole:
         return FilledHole(_shape(face).Faces[0], _shape(model) if sewn else None, report)
 
 
+    def alternatives(self, method, continuity, progress=None, **options):
+        """What else fills this hole: each other method at `continuity`, then every method at
+        each lower continuity, filled with the other `options` as given (fill's keywords; not
+        sewn). Returns those that reach a tier, best first (the higher tier, then the smaller
+        position gap), as dicts: method, continuity, achieved, g0 (model units), g0_relative and
+        g1. A fill that reaches no tier (a parameterization that leaves a gap along the loop
+        or folds) is what a user asks this for; the hole's last fill is kept as it was.
+        progress: callable(fraction) -> bool over all the trials; False cancels the rest."""
+        lower = CONTINUITIES[:CONTINUITIES.index(continuity) + 1]
+        trials = [(m, continuity) for m in METHODS if m != method]
+        trials += [(m, c) for c in reversed(lower[:-1]) for m in METHODS]
+        rank = {c: k for k, c in enumerate(("none",) + CONTINUITIES)}
+        last = getattr(self, "_last", None)
+        found = []
+        try:
+            for k, (m, c) in enumerate(trials):
+                if progress is not None and not progress(k / len(trials)):
+                    break
+                try:
+                    _, _, report = self.fill(method=m, continuity=c, sewn=False, **options)
+                except HoleFillError:
+                    continue
+                if report["achieved"] == "none":
+                    continue
+                found.append(dict(method=m, continuity=c, achieved=report["achieved"], g0=report["g0"],
+                                  g0_relative=report["g0_relative"], g1=report["g1"]))
+        finally:
+            self._last = last
+        found.sort(key=lambda a: (-rank[a["achieved"]], a["g0_relative"]))
+        return found
+
+
 def prepareHole(shape, hole=1):
     """A PreparedHole: `hole` of `shape` (as in fillHole) read and found once, for several fills
     (prepared.fill(...) takes fillHole's options), e.g. a Preview that tries continuities."""
