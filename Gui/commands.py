@@ -37,7 +37,8 @@ class _PanelCommand:
             self.cleanup()
             return
         if panel is not None:  # None: the user cancelled before a panel was needed
-            FreeCADGui.Control.showDialog(panel)
+            from HoleFillGui import task_dialog
+            task_dialog.show(panel)
 
     def _module(self):
         import importlib

@@ -61,6 +61,54 @@ class Panel:
         return True
 
 
+def show(panel):
+    """Opens `panel` in the Combo View, its widgets made to fit the view's default width (264 px;
+    fit_width): a panel is scrolled down when tall, never sideways."""
+    fit_width(panel.form)
+    FreeCADGui.Control.showDialog(panel)
+
+
+def fit_width(form):
+    """Lets the widgets of `form` (a widget, or FreeCAD's list of them) narrow to the Combo View:
+    form rows put their field under the label where both do not fit side by side, labels wrap,
+    combo boxes no longer ask for their longest choice's width, tables and lists scroll their
+    columns, and a check box's long text is broken into lines (Qt wraps no check box).
+    Panels are built for reading at any width; this is the one place that says how."""
+    for widget in form if isinstance(form, (list, tuple)) else [form]:
+        for layout in widget.findChildren(QtWidgets.QFormLayout):
+            layout.setRowWrapPolicy(QtWidgets.QFormLayout.WrapLongRows)
+            layout.setFieldGrowthPolicy(QtWidgets.QFormLayout.AllNonFixedFieldsGrow)
+        for label in widget.findChildren(QtWidgets.QLabel):
+            if label.pixmap() is None or label.pixmap().isNull():
+                label.setWordWrap(True)
+        for combo in widget.findChildren(QtWidgets.QComboBox):
+            combo.setSizeAdjustPolicy(QtWidgets.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+            combo.setMinimumContentsLength(4)
+        for box in widget.findChildren(QtWidgets.QAbstractButton):
+            if isinstance(box, (QtWidgets.QCheckBox, QtWidgets.QRadioButton)):
+                box.setText(_broken(box.text(), box.fontMetrics(), CHECK_TEXT_WIDTH))
+        for view in widget.findChildren(QtWidgets.QAbstractItemView):
+            view.setMinimumWidth(0)
+            view.setSizeAdjustPolicy(QtWidgets.QAbstractScrollArea.AdjustIgnored)
+            view.setSizePolicy(QtWidgets.QSizePolicy.Ignored, view.sizePolicy().verticalPolicy())
+
+
+# What a check box's text may take of the Combo View's 264 px (its frame, margins and indicator
+# take the rest).
+CHECK_TEXT_WIDTH = 170
+
+
+def _broken(text, metrics, width):
+    """`text` with line breaks between words where a line would pass `width` pixels."""
+    lines = []
+    for word in " ".join(text.split("\n")).split(" "):
+        if lines and metrics.horizontalAdvance(lines[-1] + " " + word) <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return "\n".join(lines)
+
+
 def status_line(name=None):
     """The panel's status line: a label that wraps (long reports stay within a narrow Combo View)."""
     label = QtWidgets.QLabel()

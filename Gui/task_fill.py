@@ -8,7 +8,7 @@ import json
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide2 import QtCore, QtGui, QtWidgets
 
 import HoleFill
 from HoleFill import fill_feature, preferences
@@ -96,7 +96,10 @@ class FillTaskPanel(task_dialog.Panel):
         # One row per loop edge: what to ask of it (auto = the continuity above, G0 on creases found
         # at the hole's corners) and, after a preview, what was asked and reached there.
         self.edgeTable = QtWidgets.QTableWidget(0, 3)
-        self.edgeTable.setHorizontalHeaderLabels([translate("HoleFill", "Edge"), translate("HoleFill", "Ask"), translate("HoleFill", "Asked / reached")])
+        self.edgeTable.setHorizontalHeaderLabels([translate("HoleFill", "Edge"), translate("HoleFill", "Ask"), translate("HoleFill", "Reached")])
+        # Compact, so that all three columns show in the Combo View's 264 px.
+        for column in (0, 1):
+            self.edgeTable.horizontalHeader().setSectionResizeMode(column, QtWidgets.QHeaderView.ResizeToContents)
         self.edgeTable.horizontalHeader().setStretchLastSection(True)
         self.edgeTable.verticalHeader().setVisible(False)
         self.edgeTable.setMinimumHeight(110)
@@ -160,6 +163,8 @@ class FillTaskPanel(task_dialog.Panel):
                     self.edgeTable.cellWidget(row, 1).setCurrentText(asked[name])
             if existing.Report:
                 self.showReport(json.loads(existing.Report))
+                # Kept on purpose once (it reaches no tier): an edit that changes nothing keeps it.
+                self.keepAnyway.setChecked(existing.Achieved == "none")
 
     def takeSelection(self):
         src, edges = _selectedHole()
@@ -237,8 +242,12 @@ class FillTaskPanel(task_dialog.Panel):
         per = {"Edge%d" % e["edge"]: e for e in report.get("edge_continuity", [])}
         for row in range(self.edgeTable.rowCount()):
             e = per.get(self.edgeTable.item(row, 0).text())
-            text = "" if e is None else "%s (%s) / %s" % (e["asked"], e["source"], e["reached"])
-            self.edgeTable.setItem(row, 2, QtWidgets.QTableWidgetItem(text))
+            item = QtWidgets.QTableWidgetItem("" if e is None else "%s→%s" % (e["asked"], e["reached"]))
+            if e is not None:
+                item.setToolTip(translate("HoleFill", "asked %s (%s), reached %s") % (e["asked"], e["source"], e["reached"]))
+                if _missed(e):
+                    item.setForeground(QtGui.QBrush(QtGui.QColor(176, 0, 0)))
+            self.edgeTable.setItem(row, 2, item)
 
     def showVerdict(self, report, alternatives=None):
         """Above the report: a fill that reaches no tier said in words (how far its patch spans past

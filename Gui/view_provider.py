@@ -11,8 +11,8 @@ class _EditInPanel:
         raise NotImplementedError
 
     def setEdit(self, vobj, mode=0):
-        import FreeCADGui
-        FreeCADGui.Control.showDialog(self.panel(vobj.Object))
+        from HoleFillGui import task_dialog
+        task_dialog.show(self.panel(vobj.Object))
         return True
 
     def unsetEdit(self, vobj, mode=0):

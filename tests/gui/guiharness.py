@@ -139,3 +139,25 @@ def click_button(button):
     subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
     pump(200)
     subprocess.run(["xdotool", "click", "1"], check=True)
+
+
+def assert_panel_fits():
+    """The open task panel fits the Combo View's width (FreeCAD's default, 264 px): it scrolls
+    down when tall, never sideways, so no field, column or button is cut off at its right."""
+    import FreeCADGui
+    from PySide2 import QtWidgets
+    pump(300)
+    areas = [a for a in FreeCADGui.getMainWindow().findChildren(QtWidgets.QScrollArea)
+             if a.isVisible() and "TaskView" in a.metaObject().className()]
+    assert len(areas) == 1, "no task view, or several: %s" % [a.metaObject().className() for a in areas]
+    area = areas[0]
+    bar = area.horizontalScrollBar()
+    log("task panel: %d px wide, %d px scrolled sideways at most" % (area.viewport().width(), bar.maximum()))
+    if bar.maximum() > 0:
+        # The widest widgets, to say what to change.
+        wide = sorted(((w.minimumSizeHint().width(), w.metaObject().className(), (getattr(w, "text", lambda: "")() or w.objectName())[:40])
+                       for w in area.widget().findChildren(QtWidgets.QWidget) if w.isVisible()), reverse=True)[:6]
+        log("widest: %s" % wide)
+    if os.environ.get("HF_MEASURE_ONLY"):
+        return
+    assert bar.maximum() == 0, "the task panel needs %d px more than the Combo View's %d" % (bar.maximum(), area.viewport().width())

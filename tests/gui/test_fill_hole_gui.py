@@ -66,6 +66,7 @@ def body():
     HoleFill.prepareHole = counting_prepare
     FreeCADGui.runCommand("HoleFill_FillHole")
     h.pump(800)
+    h.assert_panel_fits()
     # Press the task panel's OK button, as a user would.
     mw = FreeCADGui.getMainWindow()
     oks = [b for box in mw.findChildren(QtWidgets.QDialogButtonBox) if box.isVisible()

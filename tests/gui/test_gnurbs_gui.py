@@ -77,6 +77,7 @@ def body():
     assert [o.Name for o in FreeCADGui.Selection.getSelection()] == [cage_obj.Name], FreeCADGui.Selection.getSelection()
     FreeCADGui.runCommand("HoleFill_GnurbsSurface")
     h.pump(800)
+    h.assert_panel_fits()
     mw = FreeCADGui.getMainWindow()
     sharp_list = mw.findChild(QtWidgets.QListWidget, "HoleFillGnurbsSharp")
     anchors = mw.findChild(QtWidgets.QTableWidget, "HoleFillGnurbsAnchors")

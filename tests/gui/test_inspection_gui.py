@@ -79,6 +79,7 @@ def body():
     FreeCADGui.Selection.addSelection(fill)
     FreeCADGui.runCommand("HoleFill_CurvatureMap")
     h.pump(1500)
+    h.assert_panel_fits()
     assert len(overlays("Curvature")) == 2, [n.getName().getString() for n in overlays()]
     mw = FreeCADGui.getMainWindow()
     combo = [c for c in mw.findChildren(QtWidgets.QComboBox) if c.isVisible() and c.findText("Gaussian curvature") >= 0][0]
@@ -168,6 +169,7 @@ def body():
     FreeCADGui.Selection.addSelection(fill)
     FreeCADGui.runCommand("HoleFill_ContinuityCheck")
     h.pump(1500)
+    h.assert_panel_fits()
     assert len(overlays("Continuity")) == 1
     table = [t for t in mw.findChildren(QtWidgets.QTableWidget) if t.isVisible()][0]
     info["fill_g1"] = table.item(0, 2).text()

@@ -89,6 +89,7 @@ def body():
     assert [o.Name for o in FreeCADGui.Selection.getSelection()] == ["Region"], FreeCADGui.Selection.getSelection()
     FreeCADGui.runCommand("HoleFill_LabelBoundary")
     h.pump(800)
+    h.assert_panel_fits()
     mw = FreeCADGui.getMainWindow()
     segs = mw.findChild(QtWidgets.QListWidget, "HoleFillLabelSegments")
     assert segs is not None and segs.isVisible()
@@ -127,6 +128,7 @@ def body():
     FreeCADGui.Selection.addSelection(lab)
     FreeCADGui.runCommand("HoleFill_FitLabeled")
     h.pump(1500)
+    h.assert_panel_fits()
     status = mw.findChild(QtWidgets.QLabel, "HoleFillFitStatus")
     assert status is not None and "0 weak control points" in status.text(), status.text() if status else None
     view.viewIsometric()

@@ -90,6 +90,7 @@ def body():
 
     FreeCADGui.runCommand("HoleFill_FillMeshHoles")
     h.pump(800)
+    h.assert_panel_fits()
     table = FreeCADGui.getMainWindow().findChild(QtWidgets.QTableWidget, "HoleFillMeshHoleTable")
     assert table is not None and table.isVisible(), "no hole table in the task panel"
     assert table.rowCount() == 2, table.rowCount()

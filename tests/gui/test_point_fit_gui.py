@@ -62,6 +62,7 @@ def body():
     assert [o.Name for o in FreeCADGui.Selection.getSelection()] == ["Scan"], FreeCADGui.Selection.getSelection()
     FreeCADGui.runCommand("HoleFill_FitPointCloud")
     h.pump(2000)
+    h.assert_panel_fits()
     mw = FreeCADGui.getMainWindow()
     status = mw.findChild(QtWidgets.QLabel, "HoleFillPointFitStatus")
     method = mw.findChild(QtWidgets.QComboBox, "HoleFillPointFitMethod")

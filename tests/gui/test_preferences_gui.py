@@ -86,7 +86,8 @@ def body():
     doc, src = h.sample_document("GuiPrefs", "Panel", "panel_6_sided")
     names = sorted(o.Name for o in doc.Objects)
     FreeCADGui.Selection.clearSelection()
-    FreeCADGui.Selection.addSelection(doc.Name, "Panel", "Edge1")
+    # An edge of the panel's 6-sided hole (Edge1 is on its outer boundary, which no tier fills).
+    FreeCADGui.Selection.addSelection(doc.Name, "Panel", HoleFill.findHoles(src.Shape)[0].edges[0])
     FreeCADGui.runCommand("HoleFill_FillHole")
     h.pump(800)
     mw = FreeCADGui.getMainWindow()

@@ -41,7 +41,7 @@ def body():
         QTest.keyClick(combo, QtCore.Qt.Key_Down)
     h.pump(200)
     assert combo.currentText() == "uvtran", combo.currentText()
-    boxes = [b for b in mw.findChildren(QtWidgets.QCheckBox) if b.isVisible() and "projection" in b.text()]
+    boxes = [b for b in mw.findChildren(QtWidgets.QCheckBox) if b.isVisible() and "projection" in " ".join(b.text().split())]
     assert boxes, "no 'Show UVTran projection surface' check box"
     QTest.mouseClick(boxes[0], QtCore.Qt.LeftButton)
     h.pump(1500)
