@@ -189,6 +189,14 @@ class FillTaskPanel(task_dialog.Panel):
             self.holeLabel.setText(translate("HoleFill", "%s: %s is not on one hole loop") % (self.source.Label, ", ".join(self.edges)))
             self.edgeTable.setRowCount(0)
             scene_overlay.remove(LOOP)
+        elif hole.get("opening_loops"):
+            # A band-shaped opening: the fill refuses it, so say so before any Preview.
+            self.holeLabel.setText(translate("HoleFill", "%s: this opening has %d boundary loops (%s and %s): a face with one loop "
+                                             "would cap one over the other; build a face bounded by all of them instead") % (
+                self.source.Label, 1 + len(hole["opening_loops"]), ", ".join(hole["edges"]),
+                " and ".join(", ".join(loop) for loop in hole["opening_loops"])))
+            self.edgeTable.setRowCount(0)
+            self.drawLoop(hole["edges"] + [e for loop in hole["opening_loops"] for e in loop])
         else:
             self.drawLoop(hole["edges"])
             self.holeLabel.setText(translate("HoleFill", "%s: %d-sided hole, %d edges (%s)") % (

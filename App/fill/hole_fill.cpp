@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "brep/face_building.h"
+#include "brep/opening_loops.h"
 #include "fill/bending_energy.h"
 #include "fill/reachable_normals.h"
 #include "geometry/error.h"
@@ -178,6 +179,17 @@ void classify(HoleFillResult& r, const HoleFillOptions& opt) {
   }
 }
 
+// An opening bounded by more than one loop (brep/opening_loops.h) is refused: one face with one
+// loop would cap one of them over the other, and say it reached its tier.
+void refuseSharedOpening(const HoleDetectionResult& detection, const Hole& hole) {
+  const std::vector<const Hole*> others = loopsSharingOpening(detection, hole);
+  if (others.empty()) return;
+  std::string message = "this opening has " + std::to_string(others.size() + 1) + " boundary loops: the one picked (" +
+                        edgeList(hole.edgeIndices()) + ")";
+  for (const Hole* o : others) message += " and " + edgeList(o->edgeIndices());
+  throw Error(message + "; a face with one loop would cap one of them over the other: build a face bounded by all of them instead");
+}
+
 }  // namespace
 
 PreparedHole::PreparedHole(const TopoDS_Shape& model, const std::vector<int>& holeEdges, const HoleDetectionOptions& d)
@@ -186,6 +198,7 @@ PreparedHole::PreparedHole(const TopoDS_Shape& model, const std::vector<int>& ho
   const auto t0 = Clock::now();
   detection_ = detectHoles(model, d);
   hole_ = holeContainingEdges(detection_, holeEdges);
+  refuseSharedOpening(detection_, hole_);
   detectSeconds_ = since(t0);
 }
 
@@ -199,6 +212,7 @@ PreparedHole::PreparedHole(const TopoDS_Shape& model, int holeIndex, const HoleD
     throw Error("hole " + std::to_string(holeIndex + 1) + " does not exist: the shape has " +
                 std::to_string(detection_.holes.size()) + " hole(s)");
   hole_ = detection_.holes[holeIndex];
+  refuseSharedOpening(detection_, hole_);
   detectSeconds_ = since(t0);
 }
 
@@ -654,7 +668,7 @@ BSplineSurface uvtranProjectionSurface(const TopoDS_Shape& model, const std::vec
 }
 
 namespace {
-void holeJson(JsonWriter& j, const Hole& h, int index) {
+void holeJson(JsonWriter& j, const HoleDetectionResult& d, const Hole& h, int index) {
   j.beginObject();
   j.field("index", index);
   std::vector<std::string> names;
@@ -663,6 +677,14 @@ void holeJson(JsonWriter& j, const Hole& h, int index) {
   j.field("edges", names).field("edge_indices", h.edgeIndices()).field("support_faces", supports);
   j.field("corners", h.corners).field("length", h.length).field("scale", h.scale);
   j.field("outer_boundary", h.outerBoundary).field("outer_score", h.outerScore);
+  // The other loops of its opening (brep/opening_loops.h), edge names each: a fill refuses it.
+  j.key("opening_loops").beginArray();
+  for (const Hole* o : loopsSharingOpening(d, h)) {
+    std::vector<std::string> other;
+    for (int e : o->edgeIndices()) other.push_back("Edge" + std::to_string(e));
+    j.value(other);
+  }
+  j.endArray();
   j.endObject();
 }
 }  // namespace
@@ -670,9 +692,9 @@ void holeJson(JsonWriter& j, const Hole& h, int index) {
 std::string toJson(const HoleDetectionResult& d) {
   JsonWriter j;
   j.beginObject().key("holes").beginArray();
-  for (size_t i = 0; i < d.holes.size(); ++i) holeJson(j, d.holes[i], static_cast<int>(i) + 1);
+  for (size_t i = 0; i < d.holes.size(); ++i) holeJson(j, d, d.holes[i], static_cast<int>(i) + 1);
   j.endArray().key("outer_boundaries").beginArray();
-  for (size_t i = 0; i < d.outerBoundaries.size(); ++i) holeJson(j, d.outerBoundaries[i], static_cast<int>(i) + 1);
+  for (size_t i = 0; i < d.outerBoundaries.size(); ++i) holeJson(j, d, d.outerBoundaries[i], static_cast<int>(i) + 1);
   j.endArray();
   j.field("non_manifold_edges", d.nonManifoldEdges).field("warnings", d.warnings);
   j.endObject();

@@ -231,6 +231,24 @@ def test_alternatives_name_the_fills_that_reach_a_tier_where_one_reaches_none():
     assert prepared.alternatives("np", "G1", progress=lambda f: False) == []
 
 
+def test_a_band_shaped_opening_is_refused_naming_its_loops():
+    # A washer without its top (an annulus): two free loops bound one opening; a fill of one of
+    # them capped it over the other and said "ok". findHoles names the other loop; a fill refuses.
+    washer = Part.makeCylinder(10, 3).cut(Part.makeCylinder(4, 3))
+    shape = Part.Shell([f for f in washer.Faces if not (f.Surface.__class__.__name__ == "Plane" and f.CenterOfMass.z > 1.5)])
+    before = shape.exportBrepToString()
+    holes = HoleFill.findHoles(shape, includeOuter=True)
+    assert len(holes) == 2, holes
+    for h in holes:
+        assert len(h["opening_loops"]) == 1, h
+        other = next(o for o in holes if o is not h)
+        assert h["opening_loops"][0] == other["edges"], (h["opening_loops"], other["edges"])
+        fcharness.expect_error(lambda: HoleFill.fillHole(shape, h["edges"][:1]), "2 boundary loops", "build a face bounded by all of them")
+    assert shape.exportBrepToString() == before
+    # An ordinary hole has none.
+    assert all(h["opening_loops"] == [] for h in HoleFill.findHoles(load("panel_6_sided"), includeOuter=False))
+
+
 def test_make_fill_preview_reuses_the_prepared_hole():
     doc = FreeCAD.newDocument("HoleFillPrepared")
     src = doc.addObject("Part::Feature", "Panel")
