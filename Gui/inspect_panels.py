@@ -173,6 +173,9 @@ class ZebraPanel(_Panel):
         for w in (self.mode,):
             w.currentIndexChanged.connect(self.apply)
         for w in (self.count, self.width, self.angle):
+            # Typed values apply when complete (Enter, or leaving the box): each keystroke of
+            # "120" redrew the stripes for 1 and 12 first. Arrows and the wheel apply at once.
+            w.setKeyboardTracking(False)
             w.valueChanged.connect(self.apply)
         self.apply()
 

@@ -26,6 +26,14 @@ def _selectedHole():
     return None, []
 
 
+def _selectedInstead():
+    """What is selected that is not a hole's edge ("Panel.Face1", "Box"), to say so; "" when nothing is."""
+    for sel in FreeCADGui.Selection.getSelectionEx():
+        subs = [n for n in sel.SubElementNames if not n.startswith("Edge")]
+        return "%s.%s" % (sel.Object.Label, subs[0]) if subs else sel.Object.Label
+    return ""
+
+
 def formatReport(report):
     """A short human-readable table of a fill report."""
     lines = ["Status: %s — %s" % (report["status"], report["message"]),
@@ -176,7 +184,14 @@ class FillTaskPanel(task_dialog.Panel):
 
     def showHole(self):
         if self.source is None:
-            self.holeLabel.setText(translate("HoleFill", "Select one edge of a hole in the 3D view, then press 'Use selected edges'."))
+            instead = _selectedInstead()
+            if instead:
+                # A face or a whole object picked: the hole is where a face is missing, so its
+                # boundary edges are what to pick.
+                self.holeLabel.setText(translate("HoleFill", "%s is selected, not an edge: a hole is where a face is missing; select "
+                                                 "one edge of its boundary in the 3D view, then press 'Use selected edges'.") % instead)
+            else:
+                self.holeLabel.setText(translate("HoleFill", "Select one edge of a hole in the 3D view, then press 'Use selected edges'."))
             return
         try:
             holes = HoleFill.findHoles(self.source.Shape, includeOuter=True)

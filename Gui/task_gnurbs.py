@@ -86,6 +86,7 @@ class GnurbsPanel(task_dialog.Panel):
                 spin.setRange(-1e9, 1e9)
                 spin.setDecimals(6)
                 spin.setValue(float(at[c]))
+                spin.setKeyboardTracking(False)  # typed values redraw when complete, not per keystroke
                 spin.valueChanged.connect(lambda *_: self.redraw())
                 self.anchors.setCellWidget(r, 1 + c, spin)
                 spins.append(spin)

@@ -94,6 +94,7 @@ class MeshFillPanel(task_dialog.Panel):
         layout.addWidget(self.status)
         self.table.itemChanged.connect(lambda *_: self.redraw())
         self.table.itemSelectionChanged.connect(self.redraw)
+        self.maxBoundary.setKeyboardTracking(False)  # typed values apply when complete, not per keystroke
         self.maxBoundary.valueChanged.connect(self.applyMaxBoundary)
         self.applyMaxBoundary(self.maxBoundary.value())
         self.redraw()

@@ -232,7 +232,11 @@ const Hole& holeContainingEdges(const HoleDetectionResult& det, const std::vecto
   if (const Hole* h = search(det.outerBoundaries)) return *h;
   std::string names;
   for (int e : idx) names += (names.empty() ? "Edge" : ", Edge") + std::to_string(e);
-  throw Error("no hole loop contains " + names + ": pick edges on one free boundary (run 'holes' to list them)");
+  // Said in any door's words: a GUI user has no 'holes' command to run.
+  if (det.holes.empty() && det.outerBoundaries.empty())
+    throw Error(names + " is on no hole: the shape is closed (every edge joins two faces); remove a face to open a hole, "
+                "or pick a shape that has one");
+  throw Error("no hole loop contains " + names + ": pick edges of one free boundary (edges that border one face only)");
 }
 
 }  // namespace holefill

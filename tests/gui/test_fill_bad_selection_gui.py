@@ -63,6 +63,8 @@ def body():
     assert "is not on one hole loop" in visible_texts(mw), visible_texts(mw)
     press(mw, QtWidgets.QDialogButtonBox.Ok, 1500)
     assert "Fill failed" in visible_texts(mw), visible_texts(mw)
+    # Said in the GUI's words: the box is closed; no command line to run.
+    assert "the shape is closed" in visible_texts(mw) and "'holes'" not in visible_texts(mw), visible_texts(mw)
     view = FreeCADGui.ActiveDocument.ActiveView
     view.fitAll()
     h.pump(300)
@@ -70,11 +72,12 @@ def body():
     press(mw, QtWidgets.QDialogButtonBox.Cancel, 800)
     assert sorted(o.Name for o in doc.Objects) == names, sorted(o.Name for o in doc.Objects)
 
-    # 3. A face selected (no edge): treated as nothing selected.
+    # 3. A face selected (no edge): said so, with what to pick instead.
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(doc.Name, "Panel", "Face1")
     open_panel()
-    assert "Select one edge of a hole" in visible_texts(mw), visible_texts(mw)
+    assert "Panel.Face1 is selected, not an edge" in visible_texts(mw) and "select one edge of its boundary" in visible_texts(mw), \
+        visible_texts(mw)
     press(mw, QtWidgets.QDialogButtonBox.Cancel)
     assert sorted(o.Name for o in doc.Objects) == names
     assert panel.Shape.isValid() and len(panel.Shape.Faces) == 1

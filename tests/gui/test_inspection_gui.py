@@ -125,6 +125,33 @@ def body():
     a, b = QtGui.QImage(h.shot("gui_inspect_2_zebra_iso.png")), QtGui.QImage(h.shot("gui_inspect_3_zebra_top.png"))
     assert a != b, "the stripes did not change with the view"
     view.viewIsometric()
+    # A count typed with real keys redraws once, when complete (Tab to the next field; Enter is
+    # the panel's OK), not per keystroke.
+    import subprocess
+    from HoleFillGui import inspection_overlay as zebra_overlay
+    drawn, real_show = [], zebra_overlay.show_zebra
+
+    def counting_show(*args, **kwargs):
+        drawn.append(kwargs.get("count"))
+        return real_show(*args, **kwargs)
+
+    zebra_overlay.show_zebra = counting_show
+    try:
+        spin = [w for w in FreeCADGui.getMainWindow().findChildren(QtWidgets.QSpinBox) if w.isVisible() and w.maximum() == 200][0]
+        g = spin.mapToGlobal(spin.rect().center())
+        subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
+        h.pump(200)
+        subprocess.run(["xdotool", "click", "1"], check=True)
+        h.pump(200)
+        subprocess.run(["xdotool", "key", "ctrl+a"], check=True)
+        subprocess.run(["xdotool", "type", "--delay", "80", "120"], check=True)
+        h.pump(600)
+        assert drawn == [], "the stripes were redrawn while typing: %s" % drawn
+        subprocess.run(["xdotool", "key", "Tab"], check=True)
+        h.pump(1500)
+        assert spin.value() == 120 and drawn and set(drawn) == {120} and len(drawn) == 2, (spin.value(), drawn)
+    finally:
+        zebra_overlay.show_zebra = real_show
     button(QtWidgets.QDialogButtonBox.Cancel).click()
     h.pump(500)
     assert not overlays("Zebra"), "Cancel left the zebra overlay"
