@@ -245,7 +245,7 @@ class ContinuityPanel(_Panel):
                 self.table.setItem(i, j, QtWidgets.QTableWidgetItem(v if j == 0 else "%.3g" % v))
         s = report["str"]
         summary = (translate("HoleFill", "Scale %.4g, %d samples. G0 %.3g (%.2g of scale): %s. G1 %.3g rad: %s. G2 %.3g: %s.\n"
-                   "Boundary colours: green G2 (<= 0.1), yellow G1 (<= 1e-3 rad), orange G0 only, red gap.") % (
+                   "Boundary colours: blue G2 (<= 0.1), cyan G1 (<= 1e-3 rad), orange G0 only, red gap.") % (
                        report["scale"], report["samples"], report["g0"], report["g0_relative"],
                        translate("HoleFill", "strict") if s["g0_strict"] else (translate("HoleFill", "loose") if s["g0_loose"] else translate("HoleFill", "open")), report["g1"],
                        translate("HoleFill", "strict") if s["g1_strict"] else (translate("HoleFill", "loose") if s["g1_loose"] else translate("HoleFill", "broken")), report["g2"],

@@ -203,6 +203,21 @@ def body():
     assert float(table.item(0, 2).text()) <= 1e-3, table.item(0, 2).text()  # the G1 fill is G1
     view.saveImage(h.shot("gui_inspect_4_continuity_fill.png"), 1024, 768, "White")
     assert pixels(h.shot("gui_inspect_4_continuity_fill.png"))[3] > 0.001
+    # The boundary's colours are none that FreeCAD uses for preselection or selection (a G1
+    # boundary in yellow was taken for a preselected edge).
+    from pivy import coin as _coin
+    mats = _coin.SoSearchAction()
+    mats.setType(_coin.SoMaterial.getClassTypeId())
+    mats.setInterest(_coin.SoSearchAction.ALL)
+    mats.apply(overlays("Continuity")[0])
+    drawn = {tuple(round(c, 2) for c in m.getTail().diffuseColor[k].getValue())
+             for m in [mats.getPaths()[i] for i in range(mats.getPaths().getLength())] for k in range(m.getTail().diffuseColor.getNum())}
+    params = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View")
+    for name, default in (("HighlightColor", 3789624575), ("SelectionColor", 481107199)):
+        packed = params.GetUnsigned(name, default)
+        theirs = tuple(round(((packed >> shift) & 255) / 255.0, 2) for shift in (24, 16, 8))
+        assert all(sum(abs(a - b) for a, b in zip(c, theirs)) > 0.3 for c in drawn), (name, theirs, drawn)
+    info["continuity_colours"] = sorted(drawn)
     button(QtWidgets.QDialogButtonBox.Close).click()
     h.pump(500)
     assert not overlays("Continuity")
