@@ -27,7 +27,13 @@ def placed_root(name, placement):
     pick = coin.SoPickStyle()
     pick.style = coin.SoPickStyle.UNPICKABLE
     root.addChild(pick)
-    root.addChild(coin.SoPolygonOffset())
+    # Drawn in front of faces it lies on (a Preview of a Fill being edited covers the Fill's own
+    # face exactly, and the two fought pixel by pixel): negative factor and units pull it towards
+    # the viewer, as the inspection overlays do.
+    offset = coin.SoPolygonOffset()
+    offset.factor = -1.0
+    offset.units = -1.0
+    root.addChild(offset)
     return root
 
 

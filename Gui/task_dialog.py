@@ -109,6 +109,13 @@ def _broken(text, metrics, width):
     return "\n".join(lines)
 
 
+def failed(what, error):
+    """A failure line, "<what> failed at 14:03:12: <error>": a Preview pressed again that fails
+    the same way still shows it ran (the line changes)."""
+    import time
+    return translate("HoleFill", "%s failed at %s: %s") % (what, time.strftime("%H:%M:%S"), error)
+
+
 def status_line(name=None):
     """The panel's status line: a label that wraps (long reports stay within a narrow Combo View)."""
     label = QtWidgets.QLabel()

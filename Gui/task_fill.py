@@ -364,7 +364,7 @@ class FillTaskPanel(task_dialog.Panel):
                 face, _, report = self.prepared().fill(progress=progress, sewn=output == "Sewn", **options)
         except HoleFill.HoleFillError as e:
             self.previewed = None
-            self.report.setPlainText(translate("HoleFill", "Fill failed: %s") % e)
+            self.report.setPlainText(task_dialog.failed(translate("HoleFill", "Fill"), e))
             return False
         self.previewed = ((options, output), face, report)
         self.showReport(report)

@@ -107,7 +107,7 @@ class FitPanel(task_dialog.Panel):
             self.result = HoleFill.fitLabeled(self.labels.Source.Mesh, self.labels.LabelsJson, **self.options())
         except Exception as e:
             self.result = None
-            self.status.setText(translate("HoleFill", "Fit failed: %s") % e)
+            self.status.setText(task_dialog.failed(translate("HoleFill", "Fit"), e))
             remove_overlay()
             return
         finally:
@@ -117,7 +117,8 @@ class FitPanel(task_dialog.Panel):
                             "log10 condition %.1f; %d extension vertices; face %s; %.2f s%s") % (
                                 r["data_max"], r["data_rms"], r["noise_estimate"], r["weak_control_points"], r["log10_condition"],
                                 r["extended_vertices"],
-                                "valid" if r["face_valid"] else "INVALID", r["seconds"],
+                                "valid" if r["face_valid"] else translate("HoleFill", "INVALID (FreeCAD's check refuses its trimming: move corner labels, "
+                                                                          "or let the labels relax)"), r["seconds"],
                                 "".join("\nwarning: " + w for w in r["warnings"])))
         self.draw()
 

@@ -97,7 +97,7 @@ class FitPanel(task_dialog.Panel):
             self.result = HoleFill.fitPoints(self.points, **self.options())
         except Exception as e:
             self.result = None
-            self.status.setText(translate("HoleFill", "Fit failed: %s") % e)
+            self.status.setText(task_dialog.failed(translate("HoleFill", "Fit"), e))
             remove_overlay()
             return
         finally:

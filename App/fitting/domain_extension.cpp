@@ -132,12 +132,15 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       for (int v : hole.loop) {
         handle[v] = cdt.insert(CDT::Point(uv(v, 0), uv(v, 1)));
         if (handle[v]->info().id >= 0 && handle[v]->info().id != v)
-          throw Error("the region's map into the domain sends two boundary vertices to one point: the extension cannot be built");
+          throw Error("the region's map into the domain sends two boundary vertices to one point, so the extension cannot be built: "
+                      "a labeled side squeezed to nothing does that (move its corner labels apart), or fit without the extension");
         handle[v]->info().id = v;
       }
     for (size_t k = 0; k < fresh.size(); ++k) {
       freshHandle[k] = cdt.insert(CDT::Point(fresh[k].x(), fresh[k].y()));
-      if (freshHandle[k]->info().id >= 0) throw Error("the extension met a point twice: the region's parameterization overlaps itself");
+      if (freshHandle[k]->info().id >= 0)
+        throw Error("the region's map overlaps itself, so the extension cannot be built around it: labels whose corners sit where "
+                    "the boundary doubles back fold the map there (move those corners), or fit without the extension");
       freshHandle[k]->info().id = nv + static_cast<int>(k);
     }
     for (const auto& hole : holes.holes)
@@ -169,7 +172,9 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (int k = 0; k < 3; ++k) {
       id[k] = f->vertex(k)->info().id;
-      if (id[k] < 0) throw Error("the extension met a point twice: the region's parameterization overlaps itself");
+      if (id[k] < 0)
+        throw Error("the region's map overlaps itself, so the extension cannot be built around it: labels whose corners sit where "
+                    "the boundary doubles back fold the map there (move those corners), or fit without the extension");
       c += puv.row(id[k]).transpose() / 3;
     }
     if (winding(loops, c) != 0) continue;  // the region's own triangles cover this
@@ -416,7 +421,10 @@ DomainExtension extendToRectangle(const TriangleMesh& region, const Eigen::Matri
       solved = solver.info() == Eigen::Success && solver.vectorD().minCoeff() > 1e-12 * scale;
       if (solved) break;
     }
-    if (!solved) throw Error("the polyharmonic extension's system is singular");
+    if (!solved)
+      throw Error("the G2/G1 continuation of the region's boundary cannot be solved on this domain (its system is singular, "
+                  "as where a thin strip or a notch leaves grid nodes without neighbours): use the extension sampled from a "
+                  "thin-plate fit (extension 'fit', the default) or none");
     Eigen::MatrixX3d x = solver.solve(rhs);
     if (!x.allFinite()) throw Error("the polyharmonic extension failed");
     if (o.meshFairness > 0) {

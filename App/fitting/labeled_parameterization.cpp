@@ -1008,8 +1008,9 @@ LabeledParameterization parameterizeOriented(const TriangleMesh& region, const s
   } else if (out.flippedTriangles > 0) {
     // Tutte's start may hold flat triangles (three boundary vertices on one side of the
     // rectangle), which ARAP opens; only folds left in the returned map are worth a warning.
-    out.warnings.push_back(std::to_string(out.flippedTriangles) + " triangles stay folded (" + std::to_string(startFlips) +
-                           " in Tutte's start)");
+    out.warnings.push_back(std::to_string(out.flippedTriangles) + " triangles stay folded in the map (" + std::to_string(startFlips) +
+                           " in Tutte's start): the fit there follows a folded parameterization; corner labels on a smooth "
+                           "stretch of boundary or sides of very different lengths fold it (move those corners, or let the labels relax)");
   } else if (lastFlips > 0) {
     out.warnings.push_back("ARAP folded " + std::to_string(lastFlips) + " of " + std::to_string(nt) + " triangles" +
                            (lastCrosses ? " and its boundary crossed itself" : "") + "; the last unfolded map is kept");
