@@ -1,8 +1,11 @@
 """Task panel of "Fill mesh holes": lists the holes of the selected mesh (boundary vertices,
 length, why a hole cannot be filled), draws every hole's boundary in the 3D view (holes to fill
-in orange, the others in grey, the rows selected in the table in red and thicker), and on OK
-fills the checked holes into a new mesh object (HoleFill.makeMeshFill, one undo step). The
-source mesh is never modified; Cancel leaves the document as it was."""
+in orange, the others in grey, the rows selected in the table in red and thicker); Preview fills
+the checked holes without touching the document, draws the new triangles (orange, or coloured by
+their quality on request) and says in the panel what was filled and whether the result is still
+open, with each open hole's reason; OK fills the checked holes into a new mesh object
+(HoleFill.makeMeshFill, one undo step). The source mesh is never modified; Cancel leaves the
+document as it was."""
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
@@ -32,6 +35,38 @@ def mesh_from_selection():
 
 def remove_overlay():
     scene_overlay.remove(OVERLAY)
+
+
+def newTriangles(source, filled):
+    """The triangles of `filled` (a Mesh.Mesh) that `source` does not have, as point triples."""
+    def key(points):
+        return tuple(sorted((round(p.x, 12), round(p.y, 12), round(p.z, 12)) for p in points))
+    pts, facets = source.Topology
+    old = {key([pts[i] for i in f]) for f in facets}
+    fpts, ffacets = filled.Topology
+    return [tuple((p.x, p.y, p.z) for p in (fpts[i] for i in f)) for f in ffacets if key([fpts[i] for i in f]) not in old]
+
+
+def triangleQuality(t):
+    """2·r_in/R_circ of a triangle given as three points: 1 equilateral, 0 degenerate."""
+    import math
+    a, b, c = (math.dist(t[1], t[2]), math.dist(t[0], t[2]), math.dist(t[0], t[1]))
+    s = 0.5 * (a + b + c)
+    area2 = max(0.0, s * (s - a) * (s - b) * (s - c))
+    if area2 <= 0 or a * b * c <= 0:
+        return 0.0
+    return 8.0 * area2 / (a * b * c * s)
+
+
+def qualityColor(q):
+    """Red at 0 through orange (0.5) and cyan (0.8) to blue at 1; not FreeCAD's selection green."""
+    stops = ((0.0, (0.9, 0.1, 0.1)), (0.5, (1.0, 0.55, 0.0)), (0.8, (0.0, 0.78, 0.85)), (1.0, (0.15, 0.45, 0.95)))
+    q = min(1.0, max(0.0, q))
+    for (q0, c0), (q1, c1) in zip(stops, stops[1:]):
+        if q <= q1:
+            f = (q - q0) / (q1 - q0)
+            return tuple(a + f * (b - a) for a, b in zip(c0, c1))
+    return stops[-1][1]
 
 
 class MeshFillPanel(task_dialog.Panel):
@@ -89,9 +124,18 @@ class MeshFillPanel(task_dialog.Panel):
         row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Max boundary vertices")))
         row.addWidget(self.maxBoundary)
         layout.addLayout(row)
+        self.byQuality = QtWidgets.QCheckBox(translate("HoleFill", "Colour new triangles by quality"))
+        self.byQuality.setObjectName("HoleFillMeshByQuality")
+        self.byQuality.setToolTip(translate("HoleFill", "Each new triangle by its quality 2·r_in/R_circ: red at 0 (a sliver) through\n"
+                                            "orange and cyan to blue at 1 (equilateral)"))
+        layout.addWidget(self.byQuality)
+        layout.addWidget(task_dialog.button(translate("HoleFill", "Preview"), "HoleFillMeshPreview", self.preview))
         self.status = QtWidgets.QLabel()
+        self.status.setObjectName("HoleFillMeshStatus")
         self.status.setWordWrap(True)
         layout.addWidget(self.status)
+        self.previewed = None  # (filled Mesh.Mesh, new triangles' points) of the last Preview
+        self.byQuality.toggled.connect(lambda *_: self.drawPreview())
         self.table.itemChanged.connect(lambda *_: self.redraw())
         self.table.itemSelectionChanged.connect(self.redraw)
         self.maxBoundary.setKeyboardTracking(False)  # typed values apply when complete, not per keystroke
@@ -109,10 +153,69 @@ class MeshFillPanel(task_dialog.Panel):
                 over = limit > 0 and hole["boundaryVertices"] > limit
                 self.table.item(r, 0).setCheckState(QtCore.Qt.Unchecked if over else QtCore.Qt.Checked)
 
+    def preview(self):
+        """Fills the checked holes as OK would, into nothing: the new triangles drawn over the mesh
+        and, in the panel, what was filled and what stays open, and why."""
+        import HoleFill
+        self.redraw()
+        if not self.checked():
+            self.status.setText(translate("HoleFill", "No hole is checked: check the holes to fill."))
+            return False
+        try:
+            with task_dialog.progress_dialog(translate("HoleFill", "Filling mesh holes..."), self.form) as progress:
+                filled, rep = HoleFill.fillMeshHoles(self.obj.Mesh, holes=self.checked(), maxBoundary=self.maxBoundary.value(),
+                                                     progress=progress, **SHAPES[self.shape.currentIndex()][1])
+        except HoleFill.HoleFillError as e:
+            self.status.setText(task_dialog.failed(translate("HoleFill", "Preview"), e))
+            return False
+        self.previewed = (filled, newTriangles(self.obj.Mesh, filled))
+        self.drawPreview()
+        done = [f for f in rep["hole_fills"] if f["filled"]]
+        text = translate("HoleFill", "Preview: %d of %d checked holes filled, %d new triangles (quality mean %.2f, worst %.2f).") % (
+            len(done), len(self.checked()), len(self.previewed[1]),
+            sum(f["mean_quality"] * f["new_triangles"] for f in done) / max(1, sum(f["new_triangles"] for f in done)),
+            min((f["min_quality"] for f in done), default=0.0))
+        if rep["closed"]:
+            text += " " + translate("HoleFill", "The result is closed.")
+        else:
+            stay = ["%d (%s)" % (f["hole"], f["message"]) if f["message"] else str(f["hole"]) for f in rep["hole_fills"] if not f["filled"]]
+            text += " " + translate("HoleFill", "The result is still open; holes left open: %s.") % (
+                "; ".join(stay[:5]) + ("; ..." if len(stay) > 5 else "") if stay else str(rep["open"]))
+            if rep.get("closed_when_welded"):
+                text += " " + translate("HoleFill", "It closes when coincident vertices are merged (Mesh → Analyze → Evaluate and repair).")
+        self.status.setText(text)
+        return True
+
+    def drawPreview(self):
+        """The last Preview's new triangles over the mesh, orange or by quality."""
+        from pivy import coin
+        scene_overlay.remove("%sPreview" % OVERLAY)
+        if self.previewed is None or not self.previewed[1]:
+            return
+        tris = self.previewed[1]
+        root = scene_overlay.placed_root("%sPreview_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)
+        mat = coin.SoMaterial()
+        bind = coin.SoMaterialBinding()
+        if self.byQuality.isChecked():
+            mat.diffuseColor.setValues(0, len(tris), [qualityColor(triangleQuality(t)) for t in tris])
+            bind.value = coin.SoMaterialBinding.PER_FACE
+        else:
+            mat.diffuseColor.setValue(*COLOR_FILL)
+        hints = coin.SoShapeHints()
+        hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE
+        coords = coin.SoCoordinate3()
+        coords.point.setValues(0, 3 * len(tris), [list(p) for t in tris for p in t])
+        faces = coin.SoFaceSet()
+        faces.numVertices.setValues(0, len(tris), [3] * len(tris))
+        for n in (hints, mat, bind, coords, faces):
+            root.addChild(n)
+        scene_overlay.show(root)
+
     def redraw(self):
         """Boundary loops as line sets under one named separator, placed like the mesh object."""
         from pivy import coin
         remove_overlay()
+        self.previewed = None  # the holes to fill changed: the last Preview no longer says what OK makes
         picked = {i.row() for i in self.table.selectedIndexes()}
         checked = set(self.checked())
         root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)

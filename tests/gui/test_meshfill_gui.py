@@ -120,6 +120,29 @@ def body():
     assert colors[1][:3] == (0.55, 0.55, 0.55), colors
     view.saveImage(h.shot("gui_meshfill_2_selected.png"), 1024, 768, "White")
 
+    # Preview (a real click): the new triangles drawn, nothing added; the panel says what was
+    # filled and that the result is still open (hole 1 unchecked), not only the report view.
+    from pivy import coin
+    h.click_button(FreeCADGui.getMainWindow().findChild(QtWidgets.QPushButton, "HoleFillMeshPreview"))
+    h.pump(2000)
+    status = FreeCADGui.getMainWindow().findChild(QtWidgets.QLabel, "HoleFillMeshStatus").text()
+    assert "1 of 1 checked holes filled" in status and "still open" in status and "holes left open: 1 (not filled: not asked for)" in status, status
+    assert len(doc.Objects) == count, "a Preview added to the document"
+    previews = [n for n in overlay_nodes() if "Preview" in n.getName().getString()]
+    assert len(previews) == 1, [n.getName().getString() for n in overlay_nodes()]
+    faces = [previews[0].getChild(i) for i in range(previews[0].getNumChildren()) if isinstance(previews[0].getChild(i), coin.SoFaceSet)]
+    added = faces[0].numVertices.getNum()
+    assert added > 10, added
+    # By quality: one colour per new triangle, from the red-to-blue scale (no grey, no green).
+    byq = FreeCADGui.getMainWindow().findChild(QtWidgets.QCheckBox, "HoleFillMeshByQuality")
+    h.click_button(byq)
+    h.pump(500)
+    assert byq.isChecked()
+    previews = [n for n in overlay_nodes() if "Preview" in n.getName().getString()]
+    mat = [previews[0].getChild(i) for i in range(previews[0].getNumChildren()) if isinstance(previews[0].getChild(i), coin.SoMaterial)][0]
+    assert mat.diffuseColor.getNum() == added, (mat.diffuseColor.getNum(), added)
+    view.saveImage(h.shot("gui_meshfill_2b_preview_quality.png"), 1024, 768, "White")
+
     ok = None
     for bb in FreeCADGui.getMainWindow().findChildren(QtWidgets.QDialogButtonBox):
         b = bb.button(QtWidgets.QDialogButtonBox.Ok)
