@@ -104,7 +104,11 @@ class FitPanel(task_dialog.Panel):
         import HoleFill
         QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         try:
-            self.result = HoleFill.fitLabeled(self.labels.Source.Mesh, self.labels.LabelsJson, **self.options())
+            # In a process of its own, with progress and Cancel: a crash in the fit cannot take
+            # FreeCAD and the unsaved document down, and it fails the Preview instead.
+            with task_dialog.progress_dialog(translate("HoleFill", "Fitting the labeled surface..."), self.form) as progress:
+                self.result = HoleFill.fitLabeled(self.labels.Source.Mesh, self.labels.LabelsJson, isolated=True, progress=progress,
+                                                  **self.options())
         except Exception as e:
             self.result = None
             self.status.setText(task_dialog.failed(translate("HoleFill", "Fit"), e))

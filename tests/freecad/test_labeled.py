@@ -67,6 +67,26 @@ def test_a_labeled_region_becomes_one_trimmed_face():
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), maxControl=6), "maxControl")
 
 
+def test_an_isolated_fit_is_the_same_and_a_crash_in_it_is_an_error_not_the_end_of_freecad():
+    import os
+    m, labels = cut_region()
+    here = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8))
+    there = HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), isolated=True)
+    assert there[2]["data_max"] == here[2]["data_max"] and there[0].isValid(), (there[2]["data_max"], here[2]["data_max"])
+    assert there[2]["extended"][0].shape == here[2]["extended"][0].shape
+    # The core's own errors cross as themselves.
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), maxControl=6, isolated=True), "maxControl")
+    # The child dies of SIGSEGV, as a crash in CGAL would: this process lives on and says so.
+    os.environ["HOLEFILL_TEST_CRASH_CHILD"] = "fitLabeled"
+    try:
+        fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, isolated=True), "crashed (SIGSEGV)", "FreeCAD and the document are untouched")
+    finally:
+        del os.environ["HOLEFILL_TEST_CRASH_CHILD"]
+    # Cancelled at once: the child is stopped.
+    fcharness.expect_error(lambda: HoleFill.fitLabeled(m, labels, isolated=True, progress=lambda f: False), "cancelled")
+    assert HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), isolated=True)[2]["data_max"] == here[2]["data_max"]
+
+
 def test_bad_labels_give_clear_errors():
     m, labels = cut_region()
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("N", labels[0][1]), ("S", labels[0][1])]), "labeled both")

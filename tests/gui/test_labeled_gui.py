@@ -135,6 +135,23 @@ def body():
     view.fitAll()
     h.pump(300)
     view.saveImage(h.shot("gui_labeled_2_preview.png"), 1024, 768, "White")
+    # A crash inside the fit (its process dies of SIGSEGV, as it did in CGAL) fails the Preview
+    # with a message and leaves FreeCAD, the document and the panel as they were.
+    import os
+    objects = len(doc.Objects)
+    preview = mw.findChild(QtWidgets.QPushButton, "HoleFillFitPreview")
+    os.environ["HOLEFILL_TEST_CRASH_CHILD"] = "fitLabeled"
+    try:
+        h.click_button(preview)
+        h.pump(2500)
+    finally:
+        del os.environ["HOLEFILL_TEST_CRASH_CHILD"]
+    assert "crashed (SIGSEGV)" in status.text() and "untouched" in status.text(), status.text()
+    assert len(doc.Objects) == objects
+    QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_labeled_2b_crash_contained.png"))
+    h.click_button(preview)
+    h.pump(2500)
+    assert "0 weak control points" in status.text(), status.text()
     QTest.mouseClick(h.task_ok_button(), QtCore.Qt.LeftButton)
     h.pump(1500)
     fits = [o for o in doc.Objects if hasattr(o, "Untrimmed")]

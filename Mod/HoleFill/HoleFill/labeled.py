@@ -42,7 +42,7 @@ def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]),
                fairness=_FIT["fairness"], smoothing=_FIT["smoothing"], framePlacement=_FIT["framePlacement"],
                meshFairness=_FIT["meshFairness"], maxControl=_FIT["maxControl"], tolerance=_FIT["tolerance"],
                releaseDepth=_FIT["releaseDepth"], relaxLabels=_FIT["relaxLabels"], reach=_FIT["reach"], isocurves=_FIT["isocurves"],
-               relativeTolerance=_FIT["relativeTolerance"]):
+               relativeTolerance=_FIT["relativeTolerance"], isolated=False, progress=None):
     """(trimmed Part.Face, untrimmed Part.Face, report dict). `labels`: [(label, vertices), ...],
     or {"segments": [{"label": "N", "vertices": [...]}, ...]}, or that as JSON text; labels N, E,
     S, W. extension: "fit" (default: the region's extension to its four-sided domain sampled from a
@@ -67,7 +67,9 @@ def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]),
     along the boundary and labeled isocurves, G2/G1 only). The defaults are the core's
     (optionSchema("labeled_fit"), as `holefill options labeled_fit` lists them). The report also holds "uv" (per vertex),
     "frame" ([(side letter, points)], the guiding frame's curves) and "extended" ((vertices,
-    triangles) of the region extended to its four-sided domain)."""
+    triangles) of the region extended to its four-sided domain). isolated: the fit runs in a
+    process of its own (HoleFill.isolated), so that a crash in it cannot take FreeCAD down; the
+    GUI's previews and recomputes ask for it; progress(fraction) -> False then cancels it."""
     from HoleFill.meshfill import _arrays
     from HoleFill import _shape
     v, t = _arrays(mesh)
@@ -76,7 +78,12 @@ def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]),
                    meshFairness=float(meshFairness), maxControl=int(maxControl), tolerance=float(tolerance),
                    relativeTolerance=float(relativeTolerance), releaseDepth=float(releaseDepth), relaxLabels=bool(relaxLabels),
                    reach=float(reach), isocurves=str(isocurves))
-    face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(v, t, _labelsJson(labels), options)
+    if isolated:
+        from HoleFill import isolated as child
+        face, untrimmed, report, uv, frame, ev, et = child.call("fitLabeled", v, t, _labelsJson(labels), options,
+                                                                 progress=progress, what="the labeled fit")
+    else:
+        face, untrimmed, report, uv, frame, ev, et = HoleFillApp.fitLabeled(v, t, _labelsJson(labels), options)
     rep = json.loads(report)
     if rep.get("log10_condition") is None:
         rep["log10_condition"] = float("inf")  # JSON has no infinity: a singular normal matrix
@@ -267,7 +274,11 @@ class LabeledFitFeature(ParametricFeature):
             raise HoleFillApp.HoleFillError("the labeled fit has no boundary labels")
         # The options by name, as FIT_PROPERTIES maps them (fitLabeled takes the two counts as one pair).
         options = {name: getattr(obj, prop) for prop, name in FIT_PROPERTIES.items() if name not in ("controlU", "controlV")}
-        face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, controlPoints=(obj.ControlPointsU, obj.ControlPointsV),
+        import FreeCAD
+        # In the GUI the fit runs in a process of its own: a crash in it must not take the user's
+        # unsaved work down (HoleFill.isolated).
+        face, untrimmed, rep = fitLabeled(lab.Source.Mesh, lab.LabelsJson, isolated=FreeCAD.GuiUp,
+                                          controlPoints=(obj.ControlPointsU, obj.ControlPointsV),
                                           **options)
         obj.Shape = face
         obj.Untrimmed = untrimmed
