@@ -75,6 +75,10 @@ class LabelPanel(task_dialog.Panel):
         row.addWidget(self.angle)
         layout.addLayout(row)
         layout.addWidget(task_dialog.button(translate("HoleFill", "Split at corners"), "HoleFillLabelResplit", self.splitAtCorners))
+        four = task_dialog.button(translate("HoleFill", "Four corners (S, E, N, W)"), "HoleFillLabelFourCorners", self.setFourCorners)
+        four.setToolTip(translate("HoleFill", "Split the boundary at the vertices nearest the corners of its smallest bounding rectangle "
+                                  "and label the sides S, E, N, W anticlockwise: one click for a jagged scan boundary"))
+        layout.addWidget(four)
         layout.addWidget(task_dialog.button(translate("HoleFill", "Clear labels"), "HoleFillLabelClear", self.clearLabels))
         self.status = task_dialog.status_line("HoleFillLabelStatus")
         layout.addWidget(self.status)
@@ -173,6 +177,24 @@ class LabelPanel(task_dialog.Panel):
         self.splits = set(cornerSplits(self.points, self.angle.value()))
         self.labelAt = {}
         self.redraw()
+
+    def setFourCorners(self):
+        import HoleFill
+        from HoleFill.labeled import fourCorners
+        normal = [0.0, 0.0, 0.0]
+        for f in self.obj.Mesh.Facets:
+            for i in range(3):
+                normal[i] += f.Normal[i] * f.Area
+        try:
+            corners = fourCorners(self.points, normal)
+        except HoleFill.HoleFillError as e:
+            self.status.setText(str(e))
+            return
+        self.splits = set(corners)
+        self.labelAt = dict(corners)
+        self.redraw()
+        self.status.setText(translate("HoleFill", "Four corners set where the boundary meets the corners of its smallest bounding "
+                                      "rectangle; S, E, N, W run anticlockwise. Click a boundary vertex to move a split."))
 
     def clearLabels(self):
         self.labelAt = {}

@@ -87,6 +87,31 @@ def test_an_isolated_fit_is_the_same_and_a_crash_in_it_is_an_error_not_the_end_o
     assert HoleFill.fitLabeled(m, labels, controlPoints=(10, 8), isolated=True)[2]["data_max"] == here[2]["data_max"]
 
 
+def test_four_corners_label_the_sides_of_the_smallest_bounding_rectangle_anticlockwise():
+    from HoleFill.labeled import boundaryLoop, fourCorners
+    m, _ = cut_region()  # 6 x 3, its north-east corner cut away
+    loop, points = boundaryLoop(m)
+    from HoleFill.labeled import segmentsOf
+    for normal in ((0, 0, 1), (0, 0, -1)):
+        corners = fourCorners(points, normal)
+        assert len(corners) == 4 and sorted(corners.values()) == ["E", "N", "S", "W"], corners
+        splits = sorted(corners)
+        labels = [corners[k] for k in splits]
+        start = labels.index("S")
+        assert labels[start:] + labels[:start] in (["S", "E", "N", "W"], ["S", "W", "N", "E"]), labels
+        # Seen from +z the S side is the bottom one (y = 0), seen from -z the top one (y = 3).
+        side = {corners[k]: seg for k, seg in zip(splits, segmentsOf(len(loop), splits))}
+        meanY = {lab: sum(points[k][1] for k in seg) / len(seg) for lab, seg in side.items()}
+        assert (meanY["S"] < meanY["N"]) == (normal[2] > 0), (normal, meanY)
+    # A labeled fit of the four corners' labels gives a valid face.
+    from HoleFill.labeled import labelsJsonOf, segmentsOf
+    corners = fourCorners(points, (0, 0, 1))
+    splits = sorted(corners)
+    face, _, rep = HoleFill.fitLabeled(m, labelsJsonOf(loop, splits, [corners[k] for k in splits]))
+    assert face.isValid() and rep["weak_control_points"] == 0, rep["warnings"]
+    fcharness.expect_error(lambda: fourCorners(points[:3], (0, 0, 1)), "fewer than 4")
+
+
 def test_bad_labels_give_clear_errors():
     m, labels = cut_region()
     fcharness.expect_error(lambda: HoleFill.fitLabeled(m, [("N", labels[0][1]), ("S", labels[0][1])]), "labeled both")
