@@ -1,8 +1,11 @@
 """Task panel of "Label boundary": the selected mesh region's outer boundary is drawn cut into
-segments (at corners turning more than the corner angle, to start with), each in its label's
-colour with its letter. Clicking near a boundary edge in the 3D view cycles that segment's label
-N → E → S → W → none; clicking on a boundary vertex splits the segment there, or merges the two
-segments meeting at an existing split. OK stores the labels on a BoundaryLabels document object
+segments (at corners turning more than the corner angle, to start with, or at four corners with
+one click), each in its label's colour with its letter, and arrows along it the way S, E, N, W
+must follow each other (anticlockwise seen from the region's normal). Clicking near a boundary
+edge in the 3D view (within a few pixels on screen) cycles that segment's label N → E → S → W →
+none, and the keys N, E, S, W (or Delete: none) set the label of the segment clicked last;
+clicking on a boundary vertex splits the segment there, or merges the two segments meeting at an
+existing split. OK stores the labels on a BoundaryLabels document object
 (one undo step), which labeled fits follow; the mesh is never modified and Cancel changes
 nothing."""
 import math
@@ -85,9 +88,29 @@ class LabelPanel(task_dialog.Panel):
         from pivy import coin
         self.view = FreeCADGui.ActiveDocument.ActiveView
         self.callback = self.view.addEventCallbackPivy(coin.SoMouseButtonEvent.getClassTypeId(), self.onMouse)
+        self.keys = self.view.addEventCallbackPivy(coin.SoKeyboardEvent.getClassTypeId(), self.onKey)
+        self.current = None  # the start of the segment clicked last: the keys N, E, S, W label it
+        self.normal = self._meanNormal()
         self.redraw()
 
     # -- geometry ----------------------------------------------------------------------------
+    def _meanNormal(self):
+        n = [0.0, 0.0, 0.0]
+        for f in self.obj.Mesh.Facets:
+            for i in range(3):
+                n[i] += f.Normal[i] * f.Area
+        return n
+
+    def _anticlockwise(self):
+        """Whether the loop runs anticlockwise seen from the region's normal (the way S, E, N, W go)."""
+        c = [sum(p[i] for p in self.points) / len(self.points) for i in range(3)]
+        total = 0.0
+        for k in range(len(self.points)):
+            a = [self.points[k][i] - c[i] for i in range(3)]
+            b = [self.points[(k + 1) % len(self.points)][i] - c[i] for i in range(3)]
+            cross = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+            total += sum(x * y for x, y in zip(cross, self.normal))
+        return total > 0
     @staticmethod
     def _dist(a, b):
         return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
@@ -114,41 +137,50 @@ class LabelPanel(task_dialog.Panel):
         ev = cb.getEvent()
         if ev.getButton() != coin.SoMouseButtonEvent.BUTTON1 or ev.getState() != coin.SoButtonEvent.DOWN:
             return
-        pos = ev.getPosition().getValue()
-        info = self.view.getObjectInfo((int(pos[0]), int(pos[1])))
-        if info and info.get("Object") == self.obj.Name:
-            p = self.obj.Placement.inverse().multVec(FreeCAD.Vector(info["x"], info["y"], info["z"]))
-            QtCore.QTimer.singleShot(0, lambda: self.clickAt((p.x, p.y, p.z)))
+        pos = tuple(ev.getPosition().getValue())
+        QtCore.QTimer.singleShot(0, lambda: self.clickOnScreen(pos))
+
+    def onKey(self, cb):
+        from pivy import coin
+        ev = cb.getEvent()
+        if ev.getState() != coin.SoButtonEvent.DOWN or self.current is None:
             return
-        # A click on the boundary itself can miss the mesh by a pixel (FreeCAD 1.0 picks so at a
-        # boundary vertex): the boundary vertex drawn within a few pixels of it is meant.
-        k = self.nearestOnScreen(pos)
-        if k is not None:
-            QtCore.QTimer.singleShot(0, lambda: self.clickAt(tuple(self.points[k])))
+        keys = {coin.SoKeyboardEvent.N: "N", coin.SoKeyboardEvent.E: "E", coin.SoKeyboardEvent.S: "S", coin.SoKeyboardEvent.W: "W",
+                coin.SoKeyboardEvent.DELETE: "-", coin.SoKeyboardEvent.BACKSPACE: "-"}
+        label = keys.get(ev.getKey())
+        if label is None:
+            return
+        cb.setHandled()  # the view's own shortcuts do not also take the key
+        self.labelAt[self.current] = label
+        self.redraw()
 
-    def nearestOnScreen(self, pos, pixels=6.0):
-        """The loop position whose vertex the view draws within `pixels` of screen position `pos`."""
-        best, where = pixels, None
-        for i, q in enumerate(self.points):
-            sx, sy = self.view.getPointOnScreen(self.obj.Placement.multVec(FreeCAD.Vector(*q)))
-            d = math.hypot(sx - pos[0], sy - pos[1])
-            if d <= best:
-                best, where = d, i
-        return where
+    # Pick tolerances on screen, as the user sees the boundary: a vertex within 5 pixels, an edge
+    # within 12 (in model units, two edge lengths missed clicks 5-8 px inside a silhouette and a
+    # fifth of an edge made splitting fiddly).
+    VERTEX_PIXELS, EDGE_PIXELS = 5.0, 12.0
 
-    def clickAt(self, p):
-        """A click at model point p (on the mesh): a vertex click splits or merges, an edge click
-        cycles the label; clicks farther than two edge lengths from the boundary are ignored."""
-        n = len(self.loop)
-        k = min(range(n), key=lambda i: self._dist(p, self.points[i]))
-        if self._dist(p, self.points[k]) < 0.2 * self.edgeLength:
+    def clickOnScreen(self, pos):
+        """A click at screen position `pos`: on a boundary vertex it splits or merges there, near a
+        boundary edge it cycles that segment's label; elsewhere it is said to miss."""
+        screen = [self.view.getPointOnScreen(self.obj.Placement.multVec(FreeCAD.Vector(*q))) for q in self.points]
+        n = len(screen)
+        # Zoomed out, edges a few pixels long would be all vertex: a vertex then takes a third of
+        # the typical edge on screen, so that the middle of an edge still reads as the edge.
+        lengths = sorted(math.hypot(screen[i][0] - screen[(i + 1) % n][0], screen[i][1] - screen[(i + 1) % n][1]) for i in range(n))
+        vertexPixels = min(self.VERTEX_PIXELS, lengths[n // 2] / 3)
+        k = min(range(n), key=lambda i: math.hypot(screen[i][0] - pos[0], screen[i][1] - pos[1]))
+        if math.hypot(screen[k][0] - pos[0], screen[k][1] - pos[1]) <= vertexPixels:
             self.toggleSplit(k)
             return
-        e = min(range(n), key=lambda i: self._segmentDistance(p, self.points[i], self.points[(i + 1) % n]))
-        if self._segmentDistance(p, self.points[e], self.points[(e + 1) % n]) > 2 * self.edgeLength:
-            self.status.setText(translate("HoleFill", "That click was not near the boundary."))
+        e = min(range(n), key=lambda i: self._segmentDistance(pos, screen[i], screen[(i + 1) % n]))
+        if self._segmentDistance(pos, screen[e], screen[(e + 1) % n]) > self.EDGE_PIXELS:
+            self.status.setText(translate("HoleFill", "That click was not near the boundary (%d pixels from it at least).") % self.EDGE_PIXELS)
             return
         self.cycleEdge(e)
+
+    def clickAt(self, p):
+        """A click at model point p, as the click on screen where the view draws it."""
+        self.clickOnScreen(self.view.getPointOnScreen(self.obj.Placement.multVec(FreeCAD.Vector(*p))))
 
     def segmentOfEdge(self, e):
         for start, seg in self.segments():
@@ -158,6 +190,7 @@ class LabelPanel(task_dialog.Panel):
 
     def cycleEdge(self, e):
         start = self.segmentOfEdge(e)
+        self.current = start
         current = self.labelAt.get(start, "-")
         self.labelAt[start] = CYCLE[(CYCLE.index(current) + 1) % len(CYCLE)]
         self.redraw()
@@ -236,6 +269,7 @@ class LabelPanel(task_dialog.Panel):
                 for nd in (tr, font, text):
                     sep.addChild(nd)
             root.addChild(sep)
+        root.addChild(self.arrows())
         if self.splits:
             sep = coin.SoSeparator()
             col = coin.SoBaseColor()
@@ -251,10 +285,46 @@ class LabelPanel(task_dialog.Panel):
         labeled = sum(1 for l in self.labels() if l != "-")
         self.status.setText(translate("HoleFill", "%d segments, %d labeled. OK stores the labels; then use Fit labeled surface.") % (len(self.segments()), labeled))
 
+    def arrows(self):
+        """An arrowhead at the middle of each segment, pointing the way S, E, N, W follow each
+        other (anticlockwise seen from the region's normal), black so it shows on any label."""
+        from pivy import coin
+        sep = coin.SoSeparator()
+        sep.setName("%s_arrows" % OVERLAY)
+        col = coin.SoBaseColor()
+        col.rgb.setValue(0, 0, 0)
+        style = coin.SoDrawStyle()
+        style.lineWidth = 3
+        forward = 1 if self._anticlockwise() else -1
+        size = 1.5 * self.edgeLength
+        nn = math.sqrt(sum(x * x for x in self.normal)) or 1.0
+        normal = [x / nn for x in self.normal]
+        pts = []
+        for _, seg in self.segments():
+            m = seg[len(seg) // 2]
+            a, b = self.points[seg[max(0, len(seg) // 2 - 1)]], self.points[seg[min(len(seg) - 1, len(seg) // 2 + 1)]]
+            d = [forward * (y - x) for x, y in zip(a, b)]
+            dl = math.sqrt(sum(x * x for x in d))
+            if dl == 0:
+                continue
+            d = [x / dl for x in d]
+            side = (normal[1] * d[2] - normal[2] * d[1], normal[2] * d[0] - normal[0] * d[2], normal[0] * d[1] - normal[1] * d[0])
+            tip = self.points[m]
+            for sgn in (1, -1):
+                pts += [[t - size * x + sgn * 0.6 * size * y for t, x, y in zip(tip, d, side)], list(tip)]
+        coords = coin.SoCoordinate3()
+        coords.point.setValues(0, len(pts), pts)
+        lines = coin.SoLineSet()
+        lines.numVertices.setValues(0, len(pts) // 2, [2] * (len(pts) // 2))
+        for nd in (col, style, coords, lines):
+            sep.addChild(nd)
+        return sep
+
     # -- dialog (task_dialog.Panel; OK stores or edits the labels in one transaction) ---------------
     def release(self):
         from pivy import coin
         self.view.removeEventCallbackPivy(coin.SoMouseButtonEvent.getClassTypeId(), self.callback)
+        self.view.removeEventCallbackPivy(coin.SoKeyboardEvent.getClassTypeId(), self.keys)
         task_dialog.Panel.release(self)
 
     def accept(self):

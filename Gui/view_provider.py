@@ -60,7 +60,7 @@ class FillViewProvider(_EditInPanel):
 
 class LabelsViewProvider(_EditInPanel):
     """View provider of BoundaryLabels: each segment's polyline in its label's colour (N red, E
-    green, S blue, W amber, unlabeled grey), thick, with its letter at the segment's middle."""
+    green, S blue, W amber, unlabeled magenta), thick, with its letter at the segment's middle."""
 
     def __init__(self, vobj):
         vobj.Proxy = self

@@ -96,9 +96,11 @@ def body():
     assert segs.count() == 6, segment_texts(segs)  # split at the six corners of the L
     assert all("unlabeled" in t for t in segment_texts(segs))
 
-    # Real clicks just inside the boundary, at the middle of four sides: N → E → S → W cycle.
-    inset = 0.3 * H
-    for (x, y), times in (((3.0, inset), 3), ((6.0 - inset, 1.0), 2), ((2.0, 3.0 - inset), 1), ((inset, 1.5), 4)):
+    # Real clicks 6 pixels inside the boundary (where a user clicks "on" it), at the middle of four
+    # sides: N → E → S → W cycle.
+    a, b = view.getPointOnScreen(FreeCAD.Vector(0, 0, wave(0, 0))), view.getPointOnScreen(FreeCAD.Vector(1, 0, wave(1, 0)))
+    inset = 6.0 / math.hypot(b[0] - a[0], b[1] - a[1])
+    for (x, y), times in (((3.125, inset), 3), ((6.0 - inset, 1.125), 2), ((2.125, 3.0 - inset), 1), ((inset, 1.625), 4)):
         for _ in range(times):
             click(view, x, y)
     texts = segment_texts(segs)

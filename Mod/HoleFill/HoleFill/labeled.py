@@ -97,7 +97,7 @@ def fitLabeled(mesh, labels, controlPoints=(_FIT["controlU"], _FIT["controlV"]),
 
 LABELS = ("N", "E", "S", "W")
 LABEL_COLORS = {"N": (0.85, 0.10, 0.10), "E": (0.10, 0.55, 0.10), "S": (0.10, 0.25, 0.90), "W": (0.80, 0.55, 0.00),
-                "-": (0.45, 0.45, 0.45)}
+                "-": (0.85, 0.15, 0.85)}  # unlabeled: magenta, which shows on a grey, green or white mesh alike
 
 
 def boundaryLoop(mesh):
