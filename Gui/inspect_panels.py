@@ -206,7 +206,16 @@ def continuity_target():
             raise overlay.SelectionError(translate("HoleFill", "%s has no result to check: recompute it first.") % fill.Label)
         edges = [int(s[4:]) for s in subs if s.startswith("Edge")]
         face = fill.Shape.Faces[0] if fill.Output == "Face" else _patch_of(fill.Shape, src.Shape)
-        return fill, HoleFill.continuityAlong(face, src.Shape, edges or HoleFill.findHoles(src.Shape)[0]["edge_indices"])
+        report = HoleFill.continuityAlong(face, src.Shape, edges or HoleFill.findHoles(src.Shape)[0]["edge_indices"])
+        # The numbers are the Fill's own, as its panel, its properties and its report give them:
+        # measured again here at other samples, one edge showed two different G0s in two panels.
+        # The check's samples still colour the boundary.
+        import json
+        stored = json.loads(fill.Report) if getattr(fill, "Report", "") else {}
+        for key in ("g0", "g0_relative", "g1", "g2", "per_edge", "str", "scale", "samples"):
+            if key in stored:
+                report[key] = stored[key]
+        return fill, report
     faces = [(s.Object, n) for s in sel for n in s.SubElementNames if n.startswith("Face")]
     if any(s.Object.isDerivedFrom("Mesh::Feature") for s in sel):
         raise overlay.SelectionError(translate("HoleFill", "A mesh is selected: the continuity check works on B-rep faces."))

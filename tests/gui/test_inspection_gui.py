@@ -4,6 +4,8 @@ camera change, Cancel removes them), continuity check on a Fill object and on tw
 an overlay following a recompute, and bad selections (nothing, a mesh, an edge only) answered
 with a clear message. Overlay nodes are asserted in the scene graph, screenshots are saved and
 checked not to be blank; the document is never modified by any of it."""
+import json
+
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtWidgets
@@ -201,6 +203,10 @@ def body():
     table = [t for t in mw.findChildren(QtWidgets.QTableWidget) if t.isVisible()][0]
     info["fill_g1"] = table.item(0, 2).text()
     assert float(table.item(0, 2).text()) <= 1e-3, table.item(0, 2).text()  # the G1 fill is G1
+    # One G0 per edge in every panel: the check shows the Fill's own numbers.
+    own = {"Edge%d" % e["edge"]: "%.3g" % e["g0"] for e in json.loads(fill.Report)["per_edge"]}
+    shown = {table.item(r, 0).text(): table.item(r, 1).text() for r in range(1, table.rowCount())}
+    assert shown == own, (shown, own)
     view.saveImage(h.shot("gui_inspect_4_continuity_fill.png"), 1024, 768, "White")
     assert pixels(h.shot("gui_inspect_4_continuity_fill.png"))[3] > 0.001
     # The boundary's colours are none that FreeCAD uses for preselection or selection (a G1
