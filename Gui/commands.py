@@ -171,11 +171,12 @@ class CurvatureMapCommand(_InspectCommand):
 class ZebraStripesCommand(_InspectCommand):
     name = "HoleFill_ZebraStripes"
     kind, menu, icon = "Zebra", QT_TRANSLATE_NOOP("HoleFill_ZebraStripes", "Zebra stripes"), "HoleFill_Zebra.svg"
-    tip = QT_TRANSLATE_NOOP("HoleFill_ZebraStripes", ("Reflection lines (follow the view) or isophotes on the selected faces or objects: a stripe that\n"
-           "breaks shows a G1 break, a kink a G2 break. Run again to remove them."))
+    tip = QT_TRANSLATE_NOOP("HoleFill_ZebraStripes", ("Reflection lines (follow the view) or isophotes on the selected faces or objects,\n"
+           "or with nothing selected on every visible object: a stripe that breaks shows a G1 break,\n"
+           "a kink a G2 break. Run again to remove them."))
 
     def inspectPanel(self, panels, overlay):
-        return panels.ZebraPanel(overlay.targets_from_selection())
+        return panels.ZebraPanel(overlay.targets_from_selection(whole_scene=True))
 
 
 class ContinuityCheckCommand(_InspectCommand):

@@ -22,9 +22,29 @@ PREFIX = "HoleFillInspect"
 KINDS = ("Curvature", "Zebra", "Continuity")
 
 
-def targets_from_selection(allow_whole_objects=True):
-    """[(object, [face indices] or None for all faces)] from the selection; SelectionError otherwise."""
+def scene_targets():
+    """[(object, None)] for every visible object of the active document with B-rep faces: the
+    whole scene, as CurvesWB's zebra judges a fill with its neighbours without re-selecting.
+    SelectionError when there is none."""
+    doc = FreeCADGui.ActiveDocument
+    out = []
+    for obj in (doc.Document.Objects if doc is not None else []):
+        shape = getattr(obj, "Shape", None)
+        if obj.isDerivedFrom("Mesh::Feature") or shape is None or shape.isNull() or not shape.Faces:
+            continue
+        if obj.ViewObject is not None and obj.ViewObject.Visibility:
+            out.append((obj, None))
+    if not out:
+        raise SelectionError(translate("HoleFill", "No visible object has faces to draw stripes on: show one, or select faces."))
+    return out
+
+
+def targets_from_selection(allow_whole_objects=True, whole_scene=False):
+    """[(object, [face indices] or None for all faces)] from the selection; with nothing selected,
+    the visible objects (whole_scene) or SelectionError."""
     sel = FreeCADGui.Selection.getSelectionEx()
+    if not sel and whole_scene:
+        return scene_targets()
     if not sel:
         raise SelectionError(translate("HoleFill", "Select faces or Part objects first (e.g. a Fill result)."))
     out = []

@@ -193,6 +193,16 @@ def body():
     finally:
         preferences.reset()
 
+    # 2c. Zebra with nothing selected: stripes on every visible object (the source and the fill),
+    # to judge the fill with its neighbours without selecting them.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.runCommand("HoleFill_ZebraStripes")
+    h.pump(1500)
+    assert len(overlays("Zebra")) == 2, [n.getName().getString() for n in overlays()]
+    button(QtWidgets.QDialogButtonBox.Cancel).click()
+    h.pump(500)
+    assert not overlays("Zebra")
+
     # 3. Continuity check on the Fill object: a panel with numbers and a coloured boundary.
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(fill)
