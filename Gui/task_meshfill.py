@@ -37,6 +37,13 @@ def remove_overlay():
     scene_overlay.remove(OVERLAY)
 
 
+def holeSize(hole):
+    """The diagonal of the box around a hole's boundary points (model units)."""
+    import math
+    pts = hole["points"]
+    return math.dist([min(p[i] for p in pts) for i in range(3)], [max(p[i] for p in pts) for i in range(3)])
+
+
 def newTriangles(source, filled):
     """The triangles of `filled` (a Mesh.Mesh) that `source` does not have, as point triples."""
     def key(points):
@@ -124,6 +131,19 @@ class MeshFillPanel(task_dialog.Panel):
         row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Max boundary vertices")))
         row.addWidget(self.maxBoundary)
         layout.addLayout(row)
+        # MeshLab's hole-size limit, by the hole's size in model units: a scan's small holes are
+        # closed, its open border and large gaps left.
+        size_row = QtWidgets.QHBoxLayout()
+        self.maxSize = QtWidgets.QDoubleSpinBox()
+        self.maxSize.setObjectName("HoleFillMaxHoleSize")
+        self.maxSize.setDecimals(4)
+        self.maxSize.setRange(0.0, 1e9)
+        self.maxSize.setSpecialValueText(translate("HoleFill", "no limit"))
+        self.maxSize.setToolTip(translate("HoleFill", "Uncheck holes larger than this (the diagonal of the box around the hole's boundary, "
+                                          "model units)"))
+        size_row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Max hole size")))
+        size_row.addWidget(self.maxSize)
+        layout.addLayout(size_row)
         self.byQuality = QtWidgets.QCheckBox(translate("HoleFill", "Colour new triangles by quality"))
         self.byQuality.setObjectName("HoleFillMeshByQuality")
         self.byQuality.setToolTip(translate("HoleFill", "Each new triangle by its quality 2·r_in/R_circ: red at 0 (a sliver) through\n"
@@ -138,19 +158,22 @@ class MeshFillPanel(task_dialog.Panel):
         self.byQuality.toggled.connect(lambda *_: self.drawPreview())
         self.table.itemChanged.connect(lambda *_: self.redraw())
         self.table.itemSelectionChanged.connect(self.redraw)
-        self.maxBoundary.setKeyboardTracking(False)  # typed values apply when complete, not per keystroke
-        self.maxBoundary.valueChanged.connect(self.applyMaxBoundary)
-        self.applyMaxBoundary(self.maxBoundary.value())
+        for limit in (self.maxBoundary, self.maxSize):
+            limit.setKeyboardTracking(False)  # typed values apply when complete, not per keystroke
+            limit.valueChanged.connect(lambda *_: self.applyLimits())
+        self.applyLimits()
         self.redraw()
 
     def checked(self):
         return [self.holes[r]["index"] for r in range(self.table.rowCount())
                 if self.table.item(r, 0).checkState() == QtCore.Qt.Checked]
 
-    def applyMaxBoundary(self, limit):
+    def applyLimits(self):
+        """Checks the fillable holes within both limits (boundary vertices, size), unchecks the rest."""
+        limit, size = self.maxBoundary.value(), self.maxSize.value()
         for r, hole in enumerate(self.holes):
             if hole["fillable"]:
-                over = limit > 0 and hole["boundaryVertices"] > limit
+                over = (limit > 0 and hole["boundaryVertices"] > limit) or (size > 0 and holeSize(hole) > size)
                 self.table.item(r, 0).setCheckState(QtCore.Qt.Unchecked if over else QtCore.Qt.Checked)
 
     def preview(self):

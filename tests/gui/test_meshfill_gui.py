@@ -106,6 +106,20 @@ def body():
     h.pump(300)
     view.saveImage(h.shot("gui_meshfill_1_holes.png"), 1024, 768, "White")
 
+    # The hole-size limit (MeshLab's): between the two holes' sizes, the larger one is unchecked;
+    # no limit checks both again.
+    from HoleFillGui.task_meshfill import holeSize
+    import HoleFill
+    sizes = [holeSize(hh) for hh in HoleFill.meshHoles(src.Mesh)]
+    size = FreeCADGui.getMainWindow().findChild(QtWidgets.QDoubleSpinBox, "HoleFillMaxHoleSize")
+    size.setValue(0.5 * (sizes[0] + sizes[1]))
+    h.pump(300)
+    checked = [table.item(r, 0).checkState() == QtCore.Qt.Checked for r in range(2)]
+    assert checked == [s_ < 0.5 * (sizes[0] + sizes[1]) for s_ in sizes], (checked, sizes)
+    size.setValue(0)
+    h.pump(300)
+    assert all(table.item(r, 0).checkState() == QtCore.Qt.Checked for r in range(2))
+
     # Uncheck hole 1 with a real click on its checkbox; select row 0 to highlight it.
     table.scrollToItem(table.item(1, 0))
     rect = table.visualItemRect(table.item(1, 0))
