@@ -31,12 +31,71 @@ class _EditInPanel:
 
 
 class FillViewProvider(_EditInPanel):
+    """The Fill in its colour, its tree icon (a warning sign when it reaches no tier), and on
+    request (ShowControlPoints) its B-spline surface's poles and control net, as Surface Filling
+    users inspect a patch."""
+
     def __init__(self, vobj):
         vobj.Proxy = self
         vobj.ShapeColor = (0.95, 0.62, 0.20)
 
     def attach(self, vobj):
+        from pivy import coin
         self.Object = vobj.Object
+        # Added here, not in __init__: a saved document's view provider is restored without it.
+        if not hasattr(vobj, "ShowControlPoints"):
+            vobj.addProperty("App::PropertyBool", "ShowControlPoints", "HoleFill",
+                             "Draw the fill's B-spline poles and control net over it")
+        self.poles = coin.SoSeparator()
+        self.poles.setName("HoleFillPoles")
+        vobj.RootNode.addChild(self.poles)
+
+    def onChanged(self, vobj, prop):
+        if prop == "ShowControlPoints":
+            self.drawPoles(vobj)
+
+    def drawPoles(self, vobj):
+        """The poles (black points) and the control net (grey lines) of the fill's surface."""
+        from pivy import coin
+        poles = getattr(self, "poles", None)
+        if poles is None:
+            return
+        poles.removeAllChildren()
+        obj = vobj.Object
+        if not getattr(vobj, "ShowControlPoints", False) or obj.Shape.isNull():
+            return
+        faces = [f for f in obj.Shape.Faces if f.Surface.__class__.__name__ == "BSplineSurface"]
+        if not faces:
+            return
+        face = faces[0] if len(obj.Shape.Faces) == 1 else max(faces, key=lambda f: f.Surface.NbUPoles * f.Surface.NbVPoles)
+        inverse = obj.Placement.inverse()
+        grid = [[inverse.multVec(p) for p in row] for row in face.Surface.getPoles()]
+        nu, nv = len(grid), len(grid[0])
+        coords = coin.SoCoordinate3()
+        coords.point.setValues(0, nu * nv, [[p.x, p.y, p.z] for row in grid for p in row])
+        net = coin.SoSeparator()
+        col = coin.SoBaseColor()
+        col.rgb.setValue(0.35, 0.35, 0.35)
+        lines = coin.SoIndexedLineSet()
+        idx = []
+        for i in range(nu):
+            idx += [i * nv + j for j in range(nv)] + [-1]
+        for j in range(nv):
+            idx += [i * nv + j for i in range(nu)] + [-1]
+        lines.coordIndex.setValues(0, len(idx), idx)
+        for nd in (col, lines):
+            net.addChild(nd)
+        points = coin.SoSeparator()
+        pcol = coin.SoBaseColor()
+        pcol.rgb.setValue(0.0, 0.0, 0.0)
+        style = coin.SoDrawStyle()
+        style.pointSize = 5
+        for nd in (pcol, style, coin.SoPointSet()):
+            points.addChild(nd)
+        pick = coin.SoPickStyle()
+        pick.style = coin.SoPickStyle.UNPICKABLE
+        for nd in (pick, coords, net, points):
+            poles.addChild(nd)
 
     def getIcon(self):
         # A fill that reaches no continuity tier (kept by the user anyway: the Fill panel asks)
@@ -49,6 +108,8 @@ class FillViewProvider(_EditInPanel):
     def updateData(self, obj, prop):
         if prop == "Achieved" and obj.ViewObject is not None and hasattr(obj.ViewObject, "signalChangeIcon"):
             obj.ViewObject.signalChangeIcon()
+        if prop == "Shape" and obj.ViewObject is not None:
+            self.drawPoles(obj.ViewObject)
 
     def claimChildren(self):
         return []

@@ -130,6 +130,22 @@ def body():
     h.pump(500)
     view.saveImage(h.shot("gui_fill_2_filled.png"), 1024, 768, "White")
     QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_fill_3_screen.png"))
+    # The fill's poles and control net on request (the view property ShowControlPoints), as many
+    # points as the surface has poles; off again, none.
+    from pivy import coin
+    surf = fill.Shape.Faces[0].Surface
+    fill.ViewObject.ShowControlPoints = True
+    h.pump(300)
+    search = coin.SoSearchAction()
+    search.setName("HoleFillPoles")
+    search.apply(fill.ViewObject.RootNode)
+    node = search.getPath().getTail()
+    coords = [node.getChild(i) for i in range(node.getNumChildren()) if isinstance(node.getChild(i), coin.SoCoordinate3)]
+    assert coords and coords[0].point.getNum() == surf.NbUPoles * surf.NbVPoles, (coords, surf.NbUPoles, surf.NbVPoles)
+    view.saveImage(h.shot("gui_fill_4_poles.png"), 1024, 768, "White")
+    fill.ViewObject.ShowControlPoints = False
+    h.pump(200)
+    assert node.getNumChildren() == 0
     doc.undo()
     h.pump(300)
     assert not [o for o in doc.Objects if o.Name.startswith("Fill")], "undo did not remove the fill"
