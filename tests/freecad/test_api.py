@@ -294,6 +294,13 @@ def test_a_prepared_hole_handed_to_make_fill_is_not_read_again_and_change_fill_i
         assert fill.Continuity == "G2" and json.loads(fill.Report)["requested"] == "G2"
         assert fill.Proxy._prepared[2] is hole
         doc.undo()
+        # The undo brings back the G1 result with the G1 inputs: nothing to recompute (it was left
+        # "Touched" before); a property changed without a recompute still is.
+        assert fill.Continuity == "G1" and "Touched" not in fill.State, (fill.Continuity, fill.State)
+        assert json.loads(fill.Report)["requested"] == "G1"
+        fill.Continuity = "G2"
+        assert "Touched" in fill.State, fill.State
+        fill.Continuity = "G1"
         doc.recompute()
         assert fill.Continuity == "G1", fill.Continuity
         box = doc.addObject("Part::Box", "Box")

@@ -86,6 +86,7 @@ def followHole(shape, edges, signature, placement=None):
 
 class FillFeature(ParametricFeature):
     viewProvider = "FillViewProvider"
+    computedFrom = ("Source", "Method", "Continuity", "Tolerance", "AngularTolerance", "EdgeContinuity", "Output", "Weights")
 
     def setupProperties(self, obj):
         add = partial(ensureProperty, obj)
@@ -153,6 +154,7 @@ class FillFeature(ParametricFeature):
             report.setdefault("warnings", []).append(moved)
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, moved))
         obj.Report = json.dumps(report)
+        self.markComputed(obj)
         if report["status"] != "ok":
             FreeCAD.Console.PrintWarning("%s: %s\n" % (obj.Label, report["message"]))
 

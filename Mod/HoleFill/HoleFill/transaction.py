@@ -62,19 +62,71 @@ class ParametricFeature:
     never imports the Gui."""
 
     viewProvider = None
+    # The properties its result is computed from. Set, the object records them when it computes
+    # (markComputed) and an undo or redo that brings back a result with the inputs it was computed
+    # from leaves it untouched (FreeCAD marks every object whose properties an undo restored as
+    # needing a recompute, and an edit undone left the Fill "Touched" with nothing to do).
+    computedFrom = ()
 
     def __init__(self, obj):
         obj.Proxy = self
         self.setupProperties(obj)
+        _watchUndo()
+
+    def inputsKey(self, obj):
+        """The values of computedFrom as text, to compare with what the result was computed from."""
+        return repr([(name, str(getattr(obj, name, None))) for name in self.computedFrom])
+
+    def markComputed(self, obj):
+        if not self.computedFrom:
+            return
+        ensureProperty(obj, "App::PropertyString", "ComputedFor", "Base", "The inputs the shape was computed from (internal)")
+        obj.setEditorMode("ComputedFor", 2)
+        obj.ComputedFor = self.inputsKey(obj)
 
     def setupProperties(self, obj):
         raise NotImplementedError
 
     def onDocumentRestored(self, obj):
         self.setupProperties(obj)
+        _watchUndo()
 
     def __getstate__(self):
         return None
 
     def __setstate__(self, state):
         return None
+
+
+class _UndoObserver:
+    """After an undo or redo: a HoleFill object whose restored result was computed from its
+    restored inputs, and whose inputs are not themselves waiting for a recompute, is not touched."""
+
+    def slotUndoDocument(self, doc):
+        self._settle(doc)
+
+    def slotRedoDocument(self, doc):
+        self._settle(doc)
+
+    @staticmethod
+    def _settle(doc):
+        for obj in doc.Objects:
+            proxy = getattr(obj, "Proxy", None)
+            if not isinstance(proxy, ParametricFeature) or not proxy.computedFrom or "Touched" not in obj.State:
+                continue
+            if getattr(obj, "ComputedFor", None) != proxy.inputsKey(obj):
+                continue
+            if any("Touched" in o.State for o in obj.OutList):
+                continue
+            obj.purgeTouched()
+
+
+_OBSERVER = None
+
+
+def _watchUndo():
+    global _OBSERVER
+    if _OBSERVER is None:
+        import FreeCAD
+        _OBSERVER = _UndoObserver()
+        FreeCAD.addDocumentObserver(_OBSERVER)
