@@ -15,6 +15,15 @@ def remove(prefix):
             root.removeChild(i)
 
 
+def shape_placement(obj):
+    """The placement of overlays drawn from obj.Shape's own coordinates: its Placement is already
+    in them (FreeCAD bakes it into the shape), so only what its containers (an App::Part) add,
+    its global placement less its own. Mesh points are not placed: those overlays take obj.Placement."""
+    if not hasattr(obj, "getGlobalPlacement"):
+        return FreeCAD.Placement()
+    return obj.getGlobalPlacement().multiply(obj.Placement.inverse())
+
+
 def placed_root(name, placement):
     """A new overlay separator named `name` under `placement` (add children, then show())."""
     from pivy import coin

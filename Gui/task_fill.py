@@ -246,7 +246,7 @@ class FillTaskPanel(task_dialog.Panel):
         scene_overlay.show(root)
 
     def placement(self):
-        return self.source.getGlobalPlacement() if hasattr(self.source, "getGlobalPlacement") else self.source.Placement
+        return scene_overlay.shape_placement(self.source)
 
     def edgeRequests(self):
         """The Ask column as EdgeContinuity entries (["Edge5=G0", ...]; auto rows are left out)."""

@@ -133,7 +133,8 @@ class GnurbsPanel(task_dialog.Panel):
         for a, b in sorted(self.sharp):
             self.sharpList.addItem("%d-%d" % (a, b))
         pts = self.cage["vertices"]
-        root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)
+        # The cage's vertices come from its shape, which holds its Placement already.
+        root = scene_overlay.placed_root("%s_%s" % (OVERLAY, self.obj.Name), scene_overlay.shape_placement(self.obj))
         if self.sharp:
             sep = coin.SoSeparator()
             sep.setName(OVERLAY + "_sharp")

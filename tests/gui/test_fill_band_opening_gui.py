@@ -20,6 +20,8 @@ def body():
     washer = Part.makeCylinder(10, 3).cut(Part.makeCylinder(4, 3))
     src = doc.addObject("Part::Feature", "Washer")
     src.Shape = Part.Shell([f for f in washer.Faces if not (f.Surface.__class__.__name__ == "Plane" and f.CenterOfMass.z > 1.5)])
+    # Moved: its shape carries the placement, and the overlays must not apply it a second time.
+    src.Placement = FreeCAD.Placement(FreeCAD.Vector(30, 5, 0), FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 30))
     doc.recompute()
     before = src.Shape.exportBrepToString()
     holes = HoleFill.findHoles(src.Shape, includeOuter=True)
@@ -42,6 +44,22 @@ def body():
     mw = FreeCADGui.getMainWindow()
     labels = [w.text() for w in mw.findChildren(QtWidgets.QLabel) if w.isVisible() and "boundary loops" in w.text()]
     assert labels and "2 boundary loops" in labels[0], [w.text() for w in mw.findChildren(QtWidgets.QLabel) if w.isVisible()][:6]
+    # The drawn loops lie on the washer's top circles (in the scene's coordinates), not moved twice.
+    from pivy import coin
+    root = view.getSceneGraph()
+    loop = [root.getChild(i) for i in range(root.getNumChildren()) if root.getChild(i).getName().getString() == "HoleFillFillLoop"][0]
+    found = coin.SoSearchAction()
+    found.setType(coin.SoCoordinate3.getClassTypeId())
+    found.setInterest(coin.SoSearchAction.ALL)
+    found.apply(loop)
+    pts = [tuple(c.getTail().point[k].getValue()) for c in [found.getPaths()[i] for i in range(found.getPaths().getLength())]
+           for k in range(c.getTail().point.getNum())]
+    xf = [loop.getChild(i) for i in range(loop.getNumChildren()) if isinstance(loop.getChild(i), coin.SoMatrixTransform)][0]
+    m = xf.matrix.getValue().getValue()
+    identity = all(abs(m[r][c] - (1.0 if r == c else 0.0)) < 1e-9 for r in range(4) for c in range(4))
+    bb = src.Shape.BoundBox
+    assert identity and abs(max(p[0] for p in pts) - bb.XMax) < 0.1 and abs(min(p[0] for p in pts) - bb.XMin) < 0.1, \
+        (identity, max(p[0] for p in pts), bb)
     h.click_button([b for b in mw.findChildren(QtWidgets.QPushButton) if b.isVisible() and b.text() == "Preview"][0])
     h.pump(1500)
     reports = [w.toPlainText() for w in mw.findChildren(QtWidgets.QPlainTextEdit) if w.isVisible()]
