@@ -44,6 +44,22 @@ def visible(cls, name=None, text=None):
             and (text is None or w.text() == text)]
 
 
+def wait_for(done, seconds=30.0):
+    """Lets the GUI work until done() (a Preview and its search for alternatives run under a modal
+    progress dialog: a fixed wait was too short on a loaded machine)."""
+    import time
+    end = time.time() + seconds
+    while not done() and time.time() < end:
+        h.pump(200)
+    return done()
+
+
+def searched():
+    """The Preview's search for fills that reach a tier has ended: its buttons, or its 'none either'."""
+    verdict = visible(QtWidgets.QLabel, "HoleFillFillVerdict")
+    return bool(visible(QtWidgets.QPushButton, "HoleFillFillAlternative")) or bool(verdict and "either" in verdict[0].text())
+
+
 def body():
     from HoleFillGui import task_fill
     FreeCADGui.activateWorkbench("HoleFillWorkbench")
@@ -93,7 +109,8 @@ def body():
     continuity[0].setCurrentText("G1")
     h.pump(200)
     h.click_button(visible(QtWidgets.QPushButton, text="Preview")[0])
-    h.pump(4000)
+    assert wait_for(searched), "the Preview's search for alternatives did not end"
+    h.pump(300)
     verdict = visible(QtWidgets.QLabel, "HoleFillFillVerdict")
     assert verdict and "No continuity tier reached" in verdict[0].text(), [v.text() for v in verdict]
     offered = visible(QtWidgets.QPushButton, "HoleFillFillAlternative")
@@ -119,7 +136,8 @@ def body():
     # The first offered fill, clicked, previews at its tier: no verdict in red, no 'Keep' box.
     first = offered[0].text()
     h.click_button(offered[0])
-    h.pump(3000)
+    wait_for(lambda: "achieved none" not in visible(QtWidgets.QPlainTextEdit)[0].toPlainText())
+    h.pump(300)
     reports = [w.toPlainText() for w in visible(QtWidgets.QPlainTextEdit)]
     assert reports and "achieved none" not in reports[0], reports
     assert not [c for c in visible(QtWidgets.QCheckBox) if "reaches no tier" in " ".join(c.text().split())]
@@ -132,7 +150,8 @@ def body():
     method[0].setCurrentText("np")
     continuity[0].setCurrentText("G1")
     h.click_button(visible(QtWidgets.QPushButton, text="Preview")[0])
-    h.pump(4000)
+    assert wait_for(searched), "the Preview's search for alternatives did not end"
+    h.pump(300)
     keep = [c for c in visible(QtWidgets.QCheckBox) if "reaches no tier" in " ".join(c.text().split())]
     h.click_button(keep[0])
     h.pump(300)
