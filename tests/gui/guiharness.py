@@ -161,3 +161,12 @@ def assert_panel_fits():
     if os.environ.get("HF_MEASURE_ONLY"):
         return
     assert bar.maximum() == 0, "the task panel needs %d px more than the Combo View's %d" % (bar.maximum(), area.viewport().width())
+
+
+def wait_for(done, seconds=30.0):
+    """Lets the GUI work until done() or `seconds` pass; done()'s last answer. For what runs
+    under a progress dialog or in a child process (a fixed wait is too short on a loaded machine)."""
+    end = time.time() + seconds
+    while not done() and time.time() < end:
+        pump(200)
+    return done()

@@ -44,16 +44,6 @@ def visible(cls, name=None, text=None):
             and (text is None or w.text() == text)]
 
 
-def wait_for(done, seconds=30.0):
-    """Lets the GUI work until done() (a Preview and its search for alternatives run under a modal
-    progress dialog: a fixed wait was too short on a loaded machine)."""
-    import time
-    end = time.time() + seconds
-    while not done() and time.time() < end:
-        h.pump(200)
-    return done()
-
-
 def searched():
     """The Preview's search for fills that reach a tier has ended: its buttons, or its 'none either'."""
     verdict = visible(QtWidgets.QLabel, "HoleFillFillVerdict")
@@ -109,7 +99,7 @@ def body():
     continuity[0].setCurrentText("G1")
     h.pump(200)
     h.click_button(visible(QtWidgets.QPushButton, text="Preview")[0])
-    assert wait_for(searched), "the Preview's search for alternatives did not end"
+    assert h.wait_for(searched), "the Preview's search for alternatives did not end"
     h.pump(300)
     verdict = visible(QtWidgets.QLabel, "HoleFillFillVerdict")
     assert verdict and "No continuity tier reached" in verdict[0].text(), [v.text() for v in verdict]
@@ -136,7 +126,7 @@ def body():
     # The first offered fill, clicked, previews at its tier: no verdict in red, no 'Keep' box.
     first = offered[0].text()
     h.click_button(offered[0])
-    wait_for(lambda: "achieved none" not in visible(QtWidgets.QPlainTextEdit)[0].toPlainText())
+    h.wait_for(lambda: "achieved none" not in visible(QtWidgets.QPlainTextEdit)[0].toPlainText())
     h.pump(300)
     reports = [w.toPlainText() for w in visible(QtWidgets.QPlainTextEdit)]
     assert reports and "achieved none" not in reports[0], reports
@@ -150,7 +140,7 @@ def body():
     method[0].setCurrentText("np")
     continuity[0].setCurrentText("G1")
     h.click_button(visible(QtWidgets.QPushButton, text="Preview")[0])
-    assert wait_for(searched), "the Preview's search for alternatives did not end"
+    assert h.wait_for(searched), "the Preview's search for alternatives did not end"
     h.pump(300)
     keep = [c for c in visible(QtWidgets.QCheckBox) if "reaches no tier" in " ".join(c.text().split())]
     h.click_button(keep[0])

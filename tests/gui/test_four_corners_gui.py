@@ -117,8 +117,10 @@ def body():
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(lab[0])
     FreeCADGui.runCommand("HoleFill_FitLabeled")
-    h.pump(3000)
-    status = mw.findChild(QtWidgets.QLabel, "HoleFillFitStatus").text()
+    h.pump(300)
+    label = mw.findChild(QtWidgets.QLabel, "HoleFillFitStatus")
+    h.wait_for(lambda: "face " in label.text())
+    status = label.text()
     assert "face valid" in status, status
     h.finish(True, segments_before=before, labels=labels)
 

@@ -129,9 +129,10 @@ def body():
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(lab)
     FreeCADGui.runCommand("HoleFill_FitLabeled")
-    h.pump(1500)
-    h.assert_panel_fits()
+    h.pump(300)
     status = mw.findChild(QtWidgets.QLabel, "HoleFillFitStatus")
+    h.wait_for(lambda: status is not None and "weak control points" in status.text())
+    h.assert_panel_fits()
     assert status is not None and "0 weak control points" in status.text(), status.text() if status else None
     view.viewIsometric()
     view.fitAll()
@@ -145,14 +146,14 @@ def body():
     os.environ["HOLEFILL_TEST_CRASH_CHILD"] = "fitLabeled"
     try:
         h.click_button(preview)
-        h.pump(2500)
+        h.wait_for(lambda: "crashed" in status.text())
     finally:
         del os.environ["HOLEFILL_TEST_CRASH_CHILD"]
     assert "crashed (SIGSEGV)" in status.text() and "untouched" in status.text(), status.text()
     assert len(doc.Objects) == objects
     QtWidgets.QApplication.primaryScreen().grabWindow(0).save(h.shot("gui_labeled_2b_crash_contained.png"))
     h.click_button(preview)
-    h.pump(2500)
+    h.wait_for(lambda: "0 weak control points" in status.text())
     assert "0 weak control points" in status.text(), status.text()
     QTest.mouseClick(h.task_ok_button(), QtCore.Qt.LeftButton)
     h.pump(1500)

@@ -138,8 +138,9 @@ def body():
     # filled and that the result is still open (hole 1 unchecked), not only the report view.
     from pivy import coin
     h.click_button(FreeCADGui.getMainWindow().findChild(QtWidgets.QPushButton, "HoleFillMeshPreview"))
-    h.pump(2000)
-    status = FreeCADGui.getMainWindow().findChild(QtWidgets.QLabel, "HoleFillMeshStatus").text()
+    label = FreeCADGui.getMainWindow().findChild(QtWidgets.QLabel, "HoleFillMeshStatus")
+    h.wait_for(lambda: label.text().startswith("Preview"))
+    status = label.text()
     assert "1 of 1 checked holes filled" in status and "still open" in status and "holes left open: 1 (not filled: not asked for)" in status, status
     assert len(doc.Objects) == count, "a Preview added to the document"
     previews = [n for n in overlay_nodes() if "Preview" in n.getName().getString()]
