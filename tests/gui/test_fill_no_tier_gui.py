@@ -69,23 +69,28 @@ def body():
     FreeCADGui.SendMsgToActiveView("ViewSelection")
     FreeCADGui.Selection.clearSelection()
     h.pump(500)
-    name = None
+    # Camera moves without animation (FreeCAD 1.0 animates "view selection": positions read
+    # while it turned were stale, and the click picked nothing).
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetBool("UseNavigationAnimations", False)
+    name, picked = None, []
     for orient in ("viewIsometric", "viewFront", "viewTop", "viewRight", "viewRear", "viewBottom", "viewLeft"):
         getattr(view, orient)()
         FreeCADGui.Selection.addSelection(src, hole.edges[0])
         FreeCADGui.SendMsgToActiveView("ViewSelection")
         FreeCADGui.Selection.clearSelection()
-        h.pump(400)
+        h.pump(800)
         name, x, y = h.visible_hole_edge(view, src, hole.edges)
-        if name:
+        if not name:
+            continue
+        subprocess.run(["xdotool", "mousemove", str(x), str(y)], check=True)
+        h.pump(300)
+        subprocess.run(["xdotool", "click", "1"], check=True)
+        h.pump(500)
+        picked = [n for s in FreeCADGui.Selection.getSelectionEx() for n in s.SubElementNames]
+        if picked == [name]:
             break
-    assert name, "no hole edge visible from any standard view"
-    subprocess.run(["xdotool", "mousemove", str(x), str(y)], check=True)
-    h.pump(300)
-    subprocess.run(["xdotool", "click", "1"], check=True)
-    h.pump(500)
-    picked = [n for s in FreeCADGui.Selection.getSelectionEx() for n in s.SubElementNames]
-    assert picked == [name], picked
+        FreeCADGui.Selection.clearSelection()
+    assert name and picked == [name], (name, picked)
 
     FreeCADGui.runCommand("HoleFill_FillHole")
     h.pump(800)
