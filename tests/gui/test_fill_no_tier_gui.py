@@ -72,7 +72,7 @@ def body():
     # Camera moves without animation (FreeCAD 1.0 animates "view selection": positions read
     # while it turned were stale, and the click picked nothing).
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetBool("UseNavigationAnimations", False)
-    name, picked = None, []
+    name, picked, tried = None, [], []
     for orient in ("viewIsometric", "viewFront", "viewTop", "viewRight", "viewRear", "viewBottom", "viewLeft"):
         getattr(view, orient)()
         FreeCADGui.Selection.addSelection(src, hole.edges[0])
@@ -81,16 +81,18 @@ def body():
         h.pump(800)
         name, x, y = h.visible_hole_edge(view, src, hole.edges)
         if not name:
+            tried.append("%s: none visible" % orient)
             continue
         subprocess.run(["xdotool", "mousemove", str(x), str(y)], check=True)
         h.pump(300)
         subprocess.run(["xdotool", "click", "1"], check=True)
         h.pump(500)
         picked = [n for s in FreeCADGui.Selection.getSelectionEx() for n in s.SubElementNames]
+        tried.append("%s: %s at %d,%d picked %s" % (orient, name, x, y, picked))
         if picked == [name]:
             break
         FreeCADGui.Selection.clearSelection()
-    assert name and picked == [name], (name, picked)
+    assert name and picked == [name], tried
 
     FreeCADGui.runCommand("HoleFill_FillHole")
     h.pump(800)
