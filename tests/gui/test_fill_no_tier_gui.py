@@ -65,9 +65,6 @@ def body():
     hole = HoleFill.findHoles(src.Shape)[0]
     view = FreeCADGui.ActiveDocument.ActiveView
     FreeCADGui.Selection.clearSelection()
-    FreeCADGui.Selection.addSelection(src, hole.edges[0])  # framing only: the click below picks
-    FreeCADGui.SendMsgToActiveView("ViewSelection")
-    FreeCADGui.Selection.clearSelection()
     h.pump(500)
     # Camera moves without animation (FreeCAD 1.0 animates "view selection": positions read
     # while it turned were stale, and the click picked nothing).
@@ -75,9 +72,7 @@ def body():
     name, picked, tried = None, [], []
     for orient in ("viewIsometric", "viewFront", "viewTop", "viewRight", "viewRear", "viewBottom", "viewLeft"):
         getattr(view, orient)()
-        FreeCADGui.Selection.addSelection(src, hole.edges[0])
-        FreeCADGui.SendMsgToActiveView("ViewSelection")
-        FreeCADGui.Selection.clearSelection()
+        view.fitAll()  # the whole part: FreeCAD 1.0's "view selection" left the edge's screen position off the screen
         h.pump(800)
         name, x, y = h.visible_hole_edge(view, src, hole.edges)
         if not name:
