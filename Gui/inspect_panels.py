@@ -205,7 +205,7 @@ def continuity_target():
         if src is None or fill.Shape.isNull():
             raise overlay.SelectionError(translate("HoleFill", "%s has no result to check: recompute it first.") % fill.Label)
         edges = [int(s[4:]) for s in subs if s.startswith("Edge")]
-        face = fill.Shape.Faces[0] if fill.Output == "Face" else _patch_of(fill.Shape, src.Shape)
+        face = fill.Shape.Faces[0] if fill.Output == "Face" else patch_of(fill.Shape, src.Shape)
         report = HoleFill.continuityAlong(face, src.Shape, edges or HoleFill.findHoles(src.Shape)[0]["edge_indices"])
         # The numbers are the Fill's own, as its panel, its properties and its report give them:
         # measured again here at other samples, one edge showed two different G0s in two panels.
@@ -228,7 +228,7 @@ def continuity_target():
     return obj, HoleFill.faceContinuity(obj.Shape, faces[0][1], faces[1][1])
 
 
-def _patch_of(sewn, source):
+def patch_of(sewn, source):
     """The face of a sewn Fill result that the source does not have (the patch)."""
     areas = [f.Area for f in source.Faces]
     new = [f for f in sewn.Faces if not any(abs(f.Area - a) <= 1e-9 * max(1.0, a) for a in areas)]

@@ -15,6 +15,7 @@ from pivy import coin
 
 import HoleFill
 from HoleFillGui import SelectionError
+from HoleFillGui.scene_overlay import TIER_COLORS
 
 translate = FreeCAD.Qt.translate
 
@@ -357,16 +358,9 @@ def show_zebra(obj, faces, count=16, width=0.5, angleDeg=0.0, isophote=False, is
 
 
 def continuity_color(g0rel, g1, g2):
-    """Blue: G2 tier met; cyan: G1 strict met; orange: G0 strict met; red: not even G0. Not
-    FreeCAD's preselection yellow nor its selection green, which a boundary drawn in them is
-    taken for."""
-    if g0rel > 1e-6:
-        return (0.9, 0.1, 0.1)
-    if g1 > 1e-3:
-        return (1.0, 0.55, 0.0)
-    if g2 > 0.1:
-        return (0.0, 0.78, 0.85)
-    return (0.15, 0.45, 0.95)
+    """The colour of the tier met (scene_overlay.TIER_COLORS): G2 blue, G1 strict cyan, G0 strict
+    orange, not even G0 red."""
+    return TIER_COLORS["none" if g0rel > 1e-6 else "G0" if g1 > 1e-3 else "G1" if g2 > 0.1 else "G2"]
 
 
 def show_continuity(obj, report):

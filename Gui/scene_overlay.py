@@ -5,6 +5,12 @@ import FreeCAD
 import FreeCADGui
 
 
+# Continuity tiers in colour, for every overlay that shows them (boundary checks, the Fill's loop,
+# mesh quality): none of them FreeCAD's preselection yellow or selection green, which a line drawn
+# in them is taken for.
+TIER_COLORS = {"none": (0.9, 0.1, 0.1), "G0": (1.0, 0.55, 0.0), "G1": (0.0, 0.78, 0.85), "G2": (0.15, 0.45, 0.95)}
+
+
 def remove(prefix):
     if not FreeCAD.GuiUp or FreeCADGui.ActiveDocument is None:
         return

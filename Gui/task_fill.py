@@ -56,9 +56,9 @@ def formatReport(report):
 EDGE_CHOICES = ("auto", "G0", "G1", "G2")  # auto: the panel's continuity, G0 where a crease is found
 OVERLAY = "HoleFillFillPreview"
 LOOP = "HoleFillFillLoop"       # the hole's loop, drawn while the panel is open
-# The loop before a Preview, and after it the edges that reach what they were asked and those that
-# miss it: none of them FreeCAD's preselection yellow or selection green.
-COLOR_LOOP, COLOR_MET, COLOR_MISSED = (0.85, 0.15, 0.85), (0.15, 0.45, 0.95), (0.90, 0.10, 0.10)
+# The loop before a Preview (magenta), and after it the edges that reach what they were asked and
+# those that miss it, in the tiers' colours.
+COLOR_LOOP, COLOR_MET, COLOR_MISSED = (0.85, 0.15, 0.85), scene_overlay.TIER_COLORS["G2"], scene_overlay.TIER_COLORS["none"]
 TIERS = ("none",) + tuple(HoleFill.CONTINUITIES)
 
 

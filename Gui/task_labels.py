@@ -214,12 +214,8 @@ class LabelPanel(task_dialog.Panel):
     def setFourCorners(self):
         import HoleFill
         from HoleFill.labeled import fourCorners
-        normal = [0.0, 0.0, 0.0]
-        for f in self.obj.Mesh.Facets:
-            for i in range(3):
-                normal[i] += f.Normal[i] * f.Area
         try:
-            corners = fourCorners(self.points, normal)
+            corners = fourCorners(self.points, self.normal)
         except HoleFill.HoleFillError as e:
             self.status.setText(str(e))
             return

@@ -45,13 +45,10 @@ def holeSize(hole):
 
 
 def newTriangles(source, filled):
-    """The triangles of `filled` (a Mesh.Mesh) that `source` does not have, as point triples."""
-    def key(points):
-        return tuple(sorted((round(p.x, 12), round(p.y, 12), round(p.z, 12)) for p in points))
-    pts, facets = source.Topology
-    old = {key([pts[i] for i in f]) for f in facets}
-    fpts, ffacets = filled.Topology
-    return [tuple((p.x, p.y, p.z) for p in (fpts[i] for i in f)) for f in ffacets if key([fpts[i] for i in f]) not in old]
+    """The triangles of `filled` (fillMeshHoles' result for `source`) that `source` does not have,
+    as point triples: the core keeps the input's triangles first and in order, and adds after them."""
+    pts, facets = filled.Topology
+    return [tuple((pts[i].x, pts[i].y, pts[i].z) for i in f) for f in facets[source.CountFacets:]]
 
 
 def triangleQuality(t):
@@ -66,8 +63,9 @@ def triangleQuality(t):
 
 
 def qualityColor(q):
-    """Red at 0 through orange (0.5) and cyan (0.8) to blue at 1; not FreeCAD's selection green."""
-    stops = ((0.0, (0.9, 0.1, 0.1)), (0.5, (1.0, 0.55, 0.0)), (0.8, (0.0, 0.78, 0.85)), (1.0, (0.15, 0.45, 0.95)))
+    """Red at 0 through orange (0.5) and cyan (0.8) to blue at 1: the tiers' colours (scene_overlay.TIER_COLORS)."""
+    tier = scene_overlay.TIER_COLORS
+    stops = ((0.0, tier["none"]), (0.5, tier["G0"]), (0.8, tier["G1"]), (1.0, tier["G2"]))
     q = min(1.0, max(0.0, q))
     for (q0, c0), (q1, c1) in zip(stops, stops[1:]):
         if q <= q1:
@@ -154,7 +152,7 @@ class MeshFillPanel(task_dialog.Panel):
         self.status.setObjectName("HoleFillMeshStatus")
         self.status.setWordWrap(True)
         layout.addWidget(self.status)
-        self.previewed = None  # (filled Mesh.Mesh, new triangles' points) of the last Preview
+        self.previewed = None  # (settings, (filled Mesh.Mesh, report), new triangles' points) of the last Preview
         self.byQuality.toggled.connect(lambda *_: self.drawPreview())
         self.table.itemChanged.connect(lambda *_: self.redraw())
         self.table.itemSelectionChanged.connect(self.redraw)
@@ -191,11 +189,11 @@ class MeshFillPanel(task_dialog.Panel):
         except HoleFill.HoleFillError as e:
             self.status.setText(task_dialog.failed(translate("HoleFill", "Preview"), e))
             return False
-        self.previewed = (filled, newTriangles(self.obj.Mesh, filled))
+        self.previewed = (self.settings(), (filled, rep), newTriangles(self.obj.Mesh, filled))
         self.drawPreview()
         done = [f for f in rep["hole_fills"] if f["filled"]]
         text = translate("HoleFill", "Preview: %d of %d checked holes filled, %d new triangles (quality mean %.2f, worst %.2f).") % (
-            len(done), len(self.checked()), len(self.previewed[1]),
+            len(done), len(self.checked()), len(self.previewed[2]),
             sum(f["mean_quality"] * f["new_triangles"] for f in done) / max(1, sum(f["new_triangles"] for f in done)),
             min((f["min_quality"] for f in done), default=0.0))
         if rep["closed"]:
@@ -213,9 +211,9 @@ class MeshFillPanel(task_dialog.Panel):
         """The last Preview's new triangles over the mesh, orange or by quality."""
         from pivy import coin
         scene_overlay.remove("%sPreview" % OVERLAY)
-        if self.previewed is None or not self.previewed[1]:
+        if self.previewed is None or not self.previewed[2]:
             return
-        tris = self.previewed[1]
+        tris = self.previewed[2]
         root = scene_overlay.placed_root("%sPreview_%s" % (OVERLAY, self.obj.Name), self.obj.Placement)
         mat = coin.SoMaterial()
         bind = coin.SoMaterialBinding()
@@ -268,9 +266,16 @@ class MeshFillPanel(task_dialog.Panel):
             return False
         return task_dialog.Panel.accept(self)
 
+    def settings(self):
+        """What a fill of this panel depends on: the holes checked, the boundary limit, the shape."""
+        return (tuple(self.checked()), self.maxBoundary.value(), self.shape.currentIndex())
+
     def make(self):
         import HoleFill
-        return HoleFill.makeMeshFill(self.obj, holes=self.checked(), maxBoundary=self.maxBoundary.value(), **SHAPES[self.shape.currentIndex()][1])
+        # The last Preview's fill, when nothing it depends on changed since: not filled again.
+        kept = self.previewed[1] if self.previewed is not None and self.previewed[0] == self.settings() else None
+        return HoleFill.makeMeshFill(self.obj, holes=self.checked(), maxBoundary=self.maxBoundary.value(), filled=kept,
+                                     **SHAPES[self.shape.currentIndex()][1])
 
     def made(self, feature):
         import json

@@ -64,10 +64,15 @@ class FillViewProvider(_EditInPanel):
         obj = vobj.Object
         if not getattr(vobj, "ShowControlPoints", False) or obj.Shape.isNull():
             return
-        faces = [f for f in obj.Shape.Faces if f.Surface.__class__.__name__ == "BSplineSurface"]
-        if not faces:
+        face = obj.Shape.Faces[0]
+        if obj.Output != "Face":
+            from HoleFillGui.inspect_panels import patch_of
+            try:
+                face = patch_of(obj.Shape, obj.Source[0].Shape)
+            except Exception:  # the patch cannot be told among the sewn faces: nothing drawn
+                return
+        if face.Surface.__class__.__name__ != "BSplineSurface":
             return
-        face = faces[0] if len(obj.Shape.Faces) == 1 else max(faces, key=lambda f: f.Surface.NbUPoles * f.Surface.NbVPoles)
         inverse = obj.Placement.inverse()
         grid = [[inverse.multVec(p) for p in row] for row in face.Surface.getPoles()]
         nu, nv = len(grid), len(grid[0])

@@ -67,24 +67,62 @@ bool nestedIn(const std::vector<Eigen::Vector3d>& inner, const PlanarLoop& outer
   return true;
 }
 
+// Every distinct loop of a detection (an outer boundary asked for as a hole is listed twice),
+// sampled and put on its plane once.
+struct Loop {
+  const Hole* hole;
+  std::vector<Eigen::Vector3d> points;
+  PlanarLoop plane;
+};
+
+std::vector<Loop> loopsOf(const HoleDetectionResult& detection) {
+  std::vector<Loop> out;
+  std::vector<std::vector<int>> seen;
+  const auto add = [&](const Hole& h) {
+    if (h.edges.empty() || std::find(seen.begin(), seen.end(), h.edgeIndices()) != seen.end()) return;
+    seen.push_back(h.edgeIndices());
+    Loop l{&h, loopPoints(h), {}};
+    if (l.points.size() >= 3) l.plane = planar(l.points);
+    out.push_back(std::move(l));
+  };
+  for (const Hole& h : detection.holes) add(h);
+  for (const Hole& h : detection.outerBoundaries) add(h);
+  return out;
+}
+
+// The loops of `all` that share `own`'s opening: nested in it, or holes it is nested in.
+std::vector<const Hole*> sharing(const std::vector<Loop>& all, const Loop& own) {
+  std::vector<const Hole*> out;
+  if (own.points.size() < 3) return out;
+  for (const Loop& other : all) {
+    if (other.hole->edgeIndices() == own.hole->edgeIndices() || other.points.size() < 3) continue;
+    if (nestedIn(other.points, own.plane) || (!other.hole->outerBoundary && nestedIn(own.points, other.plane))) out.push_back(other.hole);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<const Hole*> loopsSharingOpening(const HoleDetectionResult& detection, const Hole& hole) {
+  const std::vector<Loop> all = loopsOf(detection);
   const std::vector<int> mine = hole.edgeIndices();
-  const std::vector<Eigen::Vector3d> points = loopPoints(hole);
-  if (points.size() < 3) return {};
-  const PlanarLoop own = planar(points);
-  std::vector<const Hole*> out;
-  std::vector<std::vector<int>> seen{mine};
-  const auto consider = [&](const Hole& other) {
-    // An outer boundary asked for as a hole (includeOuterBoundary) is listed twice.
-    if (other.edges.empty() || std::find(seen.begin(), seen.end(), other.edgeIndices()) != seen.end()) return;
-    seen.push_back(other.edgeIndices());
-    const std::vector<Eigen::Vector3d> theirs = loopPoints(other);
-    if (nestedIn(theirs, own) || (!other.outerBoundary && theirs.size() >= 3 && nestedIn(points, planar(theirs)))) out.push_back(&other);
+  for (const Loop& l : all)
+    if (l.hole->edgeIndices() == mine) return sharing(all, l);
+  Loop own{&hole, loopPoints(hole), {}};  // a hole not of this detection
+  if (own.points.size() >= 3) own.plane = planar(own.points);
+  return sharing(all, own);
+}
+
+std::vector<std::vector<const Hole*>> loopsSharingOpenings(const HoleDetectionResult& detection) {
+  const std::vector<Loop> all = loopsOf(detection);
+  std::vector<std::vector<const Hole*>> out;
+  const auto of = [&](const Hole& h) {
+    for (const Loop& l : all)
+      if (l.hole->edgeIndices() == h.edgeIndices()) return sharing(all, l);
+    return std::vector<const Hole*>{};
   };
-  for (const Hole& h : detection.holes) consider(h);
-  for (const Hole& h : detection.outerBoundaries) consider(h);
+  for (const Hole& h : detection.holes) out.push_back(of(h));
+  for (const Hole& h : detection.outerBoundaries) out.push_back(of(h));
   return out;
 }
 

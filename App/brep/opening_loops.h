@@ -21,4 +21,8 @@ namespace holefill {
 // opening: those nested in it, and the holes it is nested in. Empty for an opening of one loop.
 std::vector<const Hole*> loopsSharingOpening(const HoleDetectionResult& detection, const Hole& hole);
 
+// The same for every loop of `detection` at once, each loop sampled and fitted by a plane once:
+// [holes..., outer boundaries...] in that order, as a report of all holes needs them.
+std::vector<std::vector<const Hole*>> loopsSharingOpenings(const HoleDetectionResult& detection);
+
 }  // namespace holefill

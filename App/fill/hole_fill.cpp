@@ -668,22 +668,23 @@ BSplineSurface uvtranProjectionSurface(const TopoDS_Shape& model, const std::vec
 }
 
 namespace {
-void holeJson(JsonWriter& j, const HoleDetectionResult& d, const Hole& h, int index) {
+std::vector<std::string> edgeNames(const Hole& h) {
+  std::vector<std::string> names;
+  for (int e : h.edgeIndices()) names.push_back("Edge" + std::to_string(e));
+  return names;
+}
+
+void holeJson(JsonWriter& j, const Hole& h, const std::vector<const Hole*>& openingLoops, int index) {
   j.beginObject();
   j.field("index", index);
-  std::vector<std::string> names;
   std::vector<int> supports;
-  for (const auto& e : h.edges) { names.push_back("Edge" + std::to_string(e.edgeIndex)); supports.push_back(e.supportIndex); }
-  j.field("edges", names).field("edge_indices", h.edgeIndices()).field("support_faces", supports);
+  for (const auto& e : h.edges) supports.push_back(e.supportIndex);
+  j.field("edges", edgeNames(h)).field("edge_indices", h.edgeIndices()).field("support_faces", supports);
   j.field("corners", h.corners).field("length", h.length).field("scale", h.scale);
   j.field("outer_boundary", h.outerBoundary).field("outer_score", h.outerScore);
   // The other loops of its opening (brep/opening_loops.h), edge names each: a fill refuses it.
   j.key("opening_loops").beginArray();
-  for (const Hole* o : loopsSharingOpening(d, h)) {
-    std::vector<std::string> other;
-    for (int e : o->edgeIndices()) other.push_back("Edge" + std::to_string(e));
-    j.value(other);
-  }
+  for (const Hole* o : openingLoops) j.value(edgeNames(*o));
   j.endArray();
   j.endObject();
 }
@@ -691,10 +692,13 @@ void holeJson(JsonWriter& j, const HoleDetectionResult& d, const Hole& h, int in
 
 std::string toJson(const HoleDetectionResult& d) {
   JsonWriter j;
+  // Each loop sampled once for all the loops' nesting, not once per loop it is compared with.
+  const std::vector<std::vector<const Hole*>> openings = loopsSharingOpenings(d);
   j.beginObject().key("holes").beginArray();
-  for (size_t i = 0; i < d.holes.size(); ++i) holeJson(j, d, d.holes[i], static_cast<int>(i) + 1);
+  for (size_t i = 0; i < d.holes.size(); ++i) holeJson(j, d.holes[i], openings[i], static_cast<int>(i) + 1);
   j.endArray().key("outer_boundaries").beginArray();
-  for (size_t i = 0; i < d.outerBoundaries.size(); ++i) holeJson(j, d, d.outerBoundaries[i], static_cast<int>(i) + 1);
+  for (size_t i = 0; i < d.outerBoundaries.size(); ++i)
+    holeJson(j, d.outerBoundaries[i], openings[d.holes.size() + i], static_cast<int>(i) + 1);
   j.endArray();
   j.field("non_manifold_edges", d.nonManifoldEdges).field("warnings", d.warnings);
   j.endObject();

@@ -27,6 +27,7 @@
 #include "fill/hole_fill.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "geometry/polygon2d.h"
 #include "fitting/cloud_parameterization.h"
 #include "fitting/point_cloud_fit.h"
 #include "fitting/labeled_fit.h"
@@ -183,6 +184,14 @@ PYBIND11_MODULE(HoleFillApp, m) {
       exc(occtFailure(e).c_str());
     }
   });
+  m.def("leastAreaRectangleAngle", [](const Eigen::MatrixX2d& points) {
+    return guarded([&] {
+      std::vector<Eigen::Vector2d> p;
+      for (Eigen::Index k = 0; k < points.rows(); ++k) p.emplace_back(points.row(k).transpose());
+      return leastAreaRectangleAngle(p);
+    });
+  }, py::arg("points"), "The angle (radians, in [0, pi/2)) by which the 2D points (n x 2), turned anticlockwise, have the "
+     "least-area axis-aligned bounding rectangle (geometry/polygon2d.h).");
   m.def("findHoles", [](const std::string& brep, bool includeOuter, double cornerAngleDeg) {
     return guarded([&] {
       HoleDetectionOptions o;

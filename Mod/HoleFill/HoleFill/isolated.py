@@ -15,9 +15,6 @@ import subprocess
 import sys
 import time
 
-_CORE_DIR = None  # the folder holding HoleFillApp's module, for the child's sys.path
-
-
 def _python():
     """The interpreter to run the child with: FreeCAD's executable is not Python."""
     if os.path.basename(sys.executable).startswith("python"):

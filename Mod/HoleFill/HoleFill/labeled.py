@@ -154,21 +154,14 @@ def fourCorners(points, normal):
     if np.dot(np.cross(u, v), np.asarray(normal, dtype=float)) < 0:
         v = -v  # u, v, normal right-handed: anticlockwise in (u, v) is anticlockwise seen from the normal
     q = np.stack([(p - c) @ u, (p - c) @ v], axis=1)
-    # The least-area rectangle has a side along an edge of the convex hull (Freeman and Shapira).
-    # Of rectangles alike in area (a rectangle's four sides give the same one), the one turned
-    # least from the plane's principal axes, so that S lies along the first axis, at its low side.
-    best = None
-    for angle in _hullEdgeAngles(q):
-        for quarter in range(4):
-            a = math.remainder(angle + quarter * math.pi / 2, 2 * math.pi)
-            rot = np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]])
-            r = q @ rot.T
-            lo, hi = r.min(axis=0), r.max(axis=0)
-            area = float(np.prod(hi - lo))
-            if best is None or area < best[0] * (1 - 1e-9) or (area <= best[0] * (1 + 1e-9) and abs(a) < abs(best[1])):
-                best = (area, a, rot, lo, hi)
-    _, _, rot, lo, hi = best
+    # The core's least-area rectangle (geometry/polygon2d.h); of its four quarter turns, the one
+    # turned least from the plane's principal axes, so that S lies along the first axis, at its low side.
+    a = HoleFillApp.leastAreaRectangleAngle(q)
+    if a > math.pi / 4:
+        a -= math.pi / 2
+    rot = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
     r = q @ rot.T
+    lo, hi = r.min(axis=0), r.max(axis=0)
     corners = {"SW": (lo[0], lo[1]), "SE": (hi[0], lo[1]), "NE": (hi[0], hi[1]), "NW": (lo[0], hi[1])}
     chosen = {}
     for name, xy in corners.items():
@@ -187,29 +180,6 @@ def fourCorners(points, normal):
         raise HoleFillApp.HoleFillError("the corners of the boundary's bounding rectangle do not follow each other around it "
                                         "(a crescent, a deep slot): place the corners by clicking boundary vertices")
     return out
-
-
-def _hullEdgeAngles(q):
-    """The directions of the convex hull's edges of 2D points (monotone chain), as angles."""
-    import numpy as np
-    pts = sorted(set(map(tuple, np.round(q, 12))))
-    if len(pts) < 3:
-        return [0.0]
-
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower, upper = [], []
-    for x in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], x) <= 0:
-            lower.pop()
-        lower.append(x)
-    for x in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], x) <= 0:
-            upper.pop()
-        upper.append(x)
-    hull = lower[:-1] + upper[:-1]
-    return [float(np.arctan2(b[1] - a[1], b[0] - a[0])) for a, b in zip(hull, hull[1:] + hull[:1])]
 
 
 def segmentsOf(loopLength, splits):

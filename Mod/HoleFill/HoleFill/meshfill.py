@@ -109,13 +109,15 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["
     return _mesh(nv, nt), raiseOnFailure(json.loads(report), "mesh fill")
 
 
-def makeMeshFill(source, holes=None, maxBoundary=_MF["maxBoundary"], name=None, **options):
+def makeMeshFill(source, holes=None, maxBoundary=_MF["maxBoundary"], name=None, filled=None, **options):
     """Fill `source` (a Mesh feature) into a new Mesh::Feature of the same document, in one undo
     transaction; the source is left as it is. Returns the new feature; the fill's report is in
-    its read-only property HoleFillReport (JSON text)."""
+    its read-only property HoleFillReport (JSON text). filled: (mesh, report) that fillMeshHoles
+    already gave for this source with these holes and options (a Preview's), kept as it is
+    instead of filling again."""
     import FreeCAD
     doc = source.Document
-    filled, report = fillMeshHoles(source.Mesh, holes=holes, maxBoundary=maxBoundary, **options)
+    filled, report = filled or fillMeshHoles(source.Mesh, holes=holes, maxBoundary=maxBoundary, **options)
     if report["filled"] == 0:  # nothing failed: there was nothing to fill
         raise HoleFillApp.HoleFillError("no hole was filled: the mesh has no holes")
     doc.openTransaction("Fill mesh holes")
