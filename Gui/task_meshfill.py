@@ -3,7 +3,9 @@ length, why a hole cannot be filled), draws every hole's boundary in the 3D view
 in orange, the others in grey, the rows selected in the table in red and thicker); Preview fills
 the checked holes without touching the document, draws the new triangles (orange, or coloured by
 their quality on request) and says in the panel what was filled and whether the result is still
-open, with each open hole's reason; OK fills the checked holes into a new mesh object
+open, with each open hole's reason. Where the mesh has coincident vertices (the seams of an
+exported scan), "Merge coincident vertices first" lists and fills the holes of the mesh with
+them merged, so that a seam is no hole. OK fills the checked holes into a new mesh object
 (HoleFill.makeMeshFill, one undo step). The source mesh is never modified; Cancel leaves the
 document as it was."""
 import FreeCAD
@@ -44,11 +46,13 @@ def holeSize(hole):
     return math.dist([min(p[i] for p in pts) for i in range(3)], [max(p[i] for p in pts) for i in range(3)])
 
 
-def newTriangles(source, filled):
-    """The triangles of `filled` (fillMeshHoles' result for `source`) that `source` does not have,
-    as point triples: the core keeps the input's triangles first and in order, and adds after them."""
+def newTriangles(source, filled, report):
+    """The triangles of `filled` (fillMeshHoles' result for `source`, with its `report`) that
+    `source` does not have, as point triples: the core keeps the input's triangles first and in
+    order (less those a weld dropped), and adds after them."""
     pts, facets = filled.Topology
-    return [tuple((pts[i].x, pts[i].y, pts[i].z) for i in f) for f in facets[source.CountFacets:]]
+    kept = source.CountFacets - report.get("dropped_triangles", 0)
+    return [tuple((pts[i].x, pts[i].y, pts[i].z) for i in f) for f in facets[kept:]]
 
 
 def triangleQuality(t):
@@ -80,31 +84,30 @@ class MeshFillPanel(task_dialog.Panel):
     def __init__(self, obj):
         import HoleFill
         self.obj = obj
-        self.holes = HoleFill.meshHoles(obj.Mesh)
+        self.holes = []
         self.form = QtWidgets.QWidget()
         self.form.setWindowTitle(translate("HoleFill", "Fill mesh holes"))
         layout = QtWidgets.QVBoxLayout(self.form)
-        fillable = [hh for hh in self.holes if hh["fillable"]]
-        self.summary = QtWidgets.QLabel("%s: %d holes, %d fillable. Check the holes to fill." % (
-            obj.Label, len(self.holes), len(fillable)) if self.holes else "%s has no holes: it is closed." % obj.Label)
+        self.summary = QtWidgets.QLabel()
         self.summary.setWordWrap(True)
         layout.addWidget(self.summary)
-        self.table = QtWidgets.QTableWidget(len(self.holes), 4)
+        # Seams of duplicated vertices read as holes running side by side (CGAL's elephant: 171
+        # loops); merged, only the holes the surface has are left. Offered, not done unasked:
+        # the result's vertices are then renumbered.
+        _, self.coincident, _ = HoleFill.weldVertices(obj.Mesh, HoleFill.SEAM_WELD)
+        self.weld = QtWidgets.QCheckBox(translate("HoleFill", "Merge coincident vertices first (%d)") % self.coincident)
+        self.weld.setObjectName("HoleFillMeshWeld")
+        self.weld.setEnabled(self.coincident > 0)
+        self.weld.setToolTip(translate("HoleFill", "%d vertices lie on another one (within %g of the mesh's size), e.g. along the seams\n"
+                                       "of an exported scan, where the surface reads as two borders side by side. Checked:\n"
+                                       "the holes of the mesh with them merged are listed and filled, and the new mesh has\n"
+                                       "them merged; the source mesh is not changed.") % (self.coincident, HoleFill.SEAM_WELD))
+        layout.addWidget(self.weld)
+        self.table = QtWidgets.QTableWidget(0, 4)
         self.table.setObjectName("HoleFillMeshHoleTable")
         self.table.setHorizontalHeaderLabels([translate("HoleFill", "Hole"), translate("HoleFill", "Vertices"), translate("HoleFill", "Length"), translate("HoleFill", "Note")])
         self.table.setSelectionBehavior(QtWidgets.QAbstractItemView.SelectRows)
         self.table.verticalHeader().setVisible(False)
-        for r, hole in enumerate(self.holes):
-            item = QtWidgets.QTableWidgetItem(str(hole["index"]))
-            item.setFlags(QtCore.Qt.ItemIsUserCheckable | QtCore.Qt.ItemIsSelectable |
-                          (QtCore.Qt.ItemIsEnabled if hole["fillable"] else QtCore.Qt.NoItemFlags))
-            item.setCheckState(QtCore.Qt.Checked if hole["fillable"] else QtCore.Qt.Unchecked)
-            self.table.setItem(r, 0, item)
-            for c, text in ((1, str(hole["boundaryVertices"])), (2, "%.6g" % hole["length"]), (3, hole["message"])):
-                cell = QtWidgets.QTableWidgetItem(text)
-                cell.setFlags(QtCore.Qt.ItemIsSelectable | QtCore.Qt.ItemIsEnabled)
-                self.table.setItem(r, c, cell)
-        self.table.resizeColumnsToContents()
         layout.addWidget(self.table)
         shape_row = QtWidgets.QHBoxLayout()
         self.shape = QtWidgets.QComboBox()
@@ -154,12 +157,44 @@ class MeshFillPanel(task_dialog.Panel):
         layout.addWidget(self.status)
         self.previewed = None  # (settings, (filled Mesh.Mesh, report), new triangles' points) of the last Preview
         self.byQuality.toggled.connect(lambda *_: self.drawPreview())
+        self.listHoles()
         self.table.itemChanged.connect(lambda *_: self.redraw())
         self.table.itemSelectionChanged.connect(self.redraw)
+        self.weld.toggled.connect(lambda *_: self.listHoles())
         for limit in (self.maxBoundary, self.maxSize):
             limit.setKeyboardTracking(False)  # typed values apply when complete, not per keystroke
             limit.valueChanged.connect(lambda *_: self.applyLimits())
+        self.redraw()
+
+    def weldValue(self):
+        import HoleFill
+        return HoleFill.SEAM_WELD if self.weld.isChecked() else 0.0
+
+    def listHoles(self):
+        """The table of the holes of the mesh as it is or, checked, with coincident vertices merged."""
+        import HoleFill
+        self.holes = HoleFill.meshHoles(self.obj.Mesh, weld=self.weldValue())
+        fillable = [hh for hh in self.holes if hh["fillable"]]
+        merged = translate("HoleFill", " (coincident vertices merged)") if self.weld.isChecked() else ""
+        self.summary.setText(translate("HoleFill", "%s%s: %d holes, %d fillable. Check the holes to fill.") % (
+            self.obj.Label, merged, len(self.holes), len(fillable)) if self.holes else
+            translate("HoleFill", "%s%s has no holes: it is closed.") % (self.obj.Label, merged))
+        blocked = self.table.blockSignals(True)
+        self.table.clearContents()
+        self.table.setRowCount(len(self.holes))
+        for r, hole in enumerate(self.holes):
+            item = QtWidgets.QTableWidgetItem(str(hole["index"]))
+            item.setFlags(QtCore.Qt.ItemIsUserCheckable | QtCore.Qt.ItemIsSelectable |
+                          (QtCore.Qt.ItemIsEnabled if hole["fillable"] else QtCore.Qt.NoItemFlags))
+            item.setCheckState(QtCore.Qt.Checked if hole["fillable"] else QtCore.Qt.Unchecked)
+            self.table.setItem(r, 0, item)
+            for c, text in ((1, str(hole["boundaryVertices"])), (2, "%.6g" % hole["length"]), (3, hole["message"])):
+                cell = QtWidgets.QTableWidgetItem(text)
+                cell.setFlags(QtCore.Qt.ItemIsSelectable | QtCore.Qt.ItemIsEnabled)
+                self.table.setItem(r, c, cell)
+        self.table.resizeColumnsToContents()
         self.applyLimits()
+        self.table.blockSignals(blocked)
         self.redraw()
 
     def checked(self):
@@ -185,11 +220,11 @@ class MeshFillPanel(task_dialog.Panel):
         try:
             with task_dialog.progress_dialog(translate("HoleFill", "Filling mesh holes..."), self.form) as progress:
                 filled, rep = HoleFill.fillMeshHoles(self.obj.Mesh, holes=self.checked(), maxBoundary=self.maxBoundary.value(),
-                                                     progress=progress, **SHAPES[self.shape.currentIndex()][1])
+                                                     weld=self.weldValue(), progress=progress, **SHAPES[self.shape.currentIndex()][1])
         except HoleFill.HoleFillError as e:
             self.status.setText(task_dialog.failed(translate("HoleFill", "Preview"), e))
             return False
-        self.previewed = (self.settings(), (filled, rep), newTriangles(self.obj.Mesh, filled))
+        self.previewed = (self.settings(), (filled, rep), newTriangles(self.obj.Mesh, filled, rep))
         self.drawPreview()
         done = [f for f in rep["hole_fills"] if f["filled"]]
         text = translate("HoleFill", "Preview: %d of %d checked holes filled, %d new triangles (quality mean %.2f, worst %.2f).") % (
@@ -202,8 +237,8 @@ class MeshFillPanel(task_dialog.Panel):
             stay = ["%d (%s)" % (f["hole"], f["message"]) if f["message"] else str(f["hole"]) for f in rep["hole_fills"] if not f["filled"]]
             text += " " + translate("HoleFill", "The result is still open; holes left open: %s.") % (
                 "; ".join(stay[:5]) + ("; ..." if len(stay) > 5 else "") if stay else str(rep["open"]))
-            if rep.get("closed_when_welded"):
-                text += " " + translate("HoleFill", "It closes when coincident vertices are merged (Mesh → Analyze → Evaluate and repair).")
+            if rep.get("closed_when_welded") and not self.weld.isChecked():
+                text += " " + translate("HoleFill", "It closes when coincident vertices are merged: check 'Merge coincident vertices first'.")
         self.status.setText(text)
         return True
 
@@ -267,15 +302,15 @@ class MeshFillPanel(task_dialog.Panel):
         return task_dialog.Panel.accept(self)
 
     def settings(self):
-        """What a fill of this panel depends on: the holes checked, the boundary limit, the shape."""
-        return (tuple(self.checked()), self.maxBoundary.value(), self.shape.currentIndex())
+        """What a fill of this panel depends on: the holes checked, the boundary limit, the shape, the weld."""
+        return (tuple(self.checked()), self.maxBoundary.value(), self.shape.currentIndex(), self.weldValue())
 
     def make(self):
         import HoleFill
         # The last Preview's fill, when nothing it depends on changed since: not filled again.
         kept = self.previewed[1] if self.previewed is not None and self.previewed[0] == self.settings() else None
         return HoleFill.makeMeshFill(self.obj, holes=self.checked(), maxBoundary=self.maxBoundary.value(), filled=kept,
-                                     **SHAPES[self.shape.currentIndex()][1])
+                                     weld=self.weldValue(), **SHAPES[self.shape.currentIndex()][1])
 
     def made(self, feature):
         import json

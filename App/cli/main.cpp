@@ -74,8 +74,8 @@ const char* kUsage =
     "                [--symmetric auto|yes|no] [--normal-angle DEG] [--edges 0|1] [--legend 0|1] [--json]\n"
     "  holefill mesh-fill MESH --out OUT [--holes 0,3,..] [--json]   MESH, OUT: .obj .off .ply .stl; holes as\n"
     "                `holefill mesh-holes` numbers them [the mesh fill's options, `holefill options mesh_fill`:\n"
-    "                --max-boundary, --triangulation angle|dihedral|auto, --no-refine, --shape-order, --fair-iterations, ...]\n"
-    "  holefill mesh-holes MESH [--json]\n"
+    "                --max-boundary, --weld, --triangulation angle|dihedral|auto, --no-refine, --shape-order, ...]\n"
+    "  holefill mesh-holes MESH [--weld F] [--json]   --weld F: coincident vertices (within F of the diagonal) merged first\n"
     "  holefill gnurbs CAGE.obj --out OUT.step|OUT.brep [--sharp EDGES.json] [--anchors ANCHORS.json]\n"
     "                [--fit TARGET.obj|.off|.ply|.stl|.xyz] [--cage-out FITTED.obj] [--json] [the G-NURBS options,\n"
     "                `holefill options gnurbs`: --no-refine, --max-valence, --solve fair|stepwise, --merge-regular, --fit-rounds]\n"
@@ -339,7 +339,11 @@ std::vector<int> indexList(const std::string& list, const std::string& what) {
 
 int cmdMeshHoles(const Args& a) {
   if (a.input.empty()) throw Error("mesh-holes: no input file");
-  const MeshHoleReport d = findMeshHoles(readMesh(a.input));
+  MeshFillOptions o;
+  applyFlags(meshFillSchema(), a, o);  // --weld numbers the holes as mesh-fill with it does
+  TriangleMesh mesh = readMesh(a.input);
+  if (o.weld > 0) mesh = weldVertices(mesh, o.weld * boundingDiagonal(mesh.vertices)).mesh;
+  const MeshHoleReport d = findMeshHoles(mesh);
   if (a.has("--json")) {
     std::cout << toJson(d) << "\n";
     return 0;

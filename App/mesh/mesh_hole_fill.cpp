@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 #include <chrono>
+#include <cmath>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -20,11 +21,20 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& options) {
+MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  if (mesh.triangles.rows() == 0) throw Error("the mesh has no triangles; there is nothing to fill");
+  if (input.triangles.rows() == 0) throw Error("the mesh has no triangles; there is nothing to fill");
+  if (!(options.weld >= 0) || !std::isfinite(options.weld)) throw Error("weld: a fraction of the diagonal, 0 or more");
   MeshFillResult result;
-  validateMesh(mesh);
+  validateMesh(input);
+  VertexWeld welded;
+  if (options.weld > 0) {
+    welded = weldVertices(input, options.weld * boundingDiagonal(input.vertices));
+    result.weldedVertices = welded.mergedVertices;
+    result.droppedTriangles = welded.droppedTriangles;
+    if (welded.mesh.triangles.rows() == 0) throw Error("weld: the merge collapsed every triangle; use a smaller weld tolerance");
+  }
+  const TriangleMesh& mesh = options.weld > 0 ? welded.mesh : input;
   const MeshTopology topo(mesh);
   result.detection = findMeshHoles(mesh, topo);
   const MeshHoleReport& detection = result.detection;
@@ -299,6 +309,8 @@ std::string MeshFillResult::toJson() const {
   w.field("closed", closed);
   w.field("closed_when_welded", closedWhenWelded);
   w.field("cancelled", cancelled);
+  w.field("welded_vertices", weldedVertices);
+  w.field("dropped_triangles", droppedTriangles);
   w.field("seconds", seconds);
   w.key("topology").beginObject();
   w.field("boundary_edges", detection.boundaryEdges);

@@ -3,7 +3,8 @@
 // minimum-angle principle (min_angle_triangulation.h), density refinement with Delaunay-like
 // relaxation (patch_refinement.h) and bilateral fairing of the new vertices
 // (bilateral_fairing.h). Only vertices and triangles are added: the input's vertices and
-// triangles come first in the result, bit for bit and in their order. Each hole is filled
+// triangles come first in the result, bit for bit and in their order (after the weld of
+// coincident vertices, vertex_weld.h, where MeshFillOptions::weld asks for it). Each hole is filled
 // on its own; one that cannot be filled is reported and left open, the rest still are.
 // The per-hole report has the columns of the paper's Table 1 (new vertices and triangles,
 // Field's quality min/max/mean) plus time.
@@ -22,6 +23,7 @@
 #include "mesh/min_dihedral_triangulation.h"
 #include "mesh/patch_refinement.h"
 #include "mesh/quality_improvement.h"
+#include "mesh/vertex_weld.h"
 
 namespace holefill {
 
@@ -31,6 +33,10 @@ struct MeshFillOptions {
   // one core, a 20,000-vertex one about a minute, and a hole that long is mostly a scan's outer
   // border, which nobody means to close. One default for every door (CLI, Python, task panel).
   int maxBoundary = 5000;
+  // > 0: vertices closer than this fraction of the bounding-box diagonal are merged first
+  // (vertex_weld.h), so that seams of duplicated vertices close and only the real holes are
+  // found and filled; hole indices then refer to the welded mesh. 0: the mesh as it is.
+  double weld = 0;
   std::vector<int> holes;                // indices into findMeshHoles(mesh).holes; empty: every fillable hole
   bool refine = true;                    // density refinement (off: the bare minimum-angle triangulation)
   // The initial triangulation: the paper's minimum-angle ear cutting, Liepa's minimum-dihedral
@@ -73,6 +79,8 @@ struct MeshFillResult {
   bool closed = false;                   // no boundary edge left
   bool closedWhenWelded = false;         // no boundary edge left once coincident (duplicated) vertices are welded
   bool cancelled = false;
+  int weldedVertices = 0;                // merged into a coincident copy first (MeshFillOptions::weld)
+  int droppedTriangles = 0;              // collapsed or repeated by that merge
   double seconds = 0;
   std::vector<std::string> warnings;
   // Failed when no hole was filled and one is left open, Warned when some are left open

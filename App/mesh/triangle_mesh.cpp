@@ -66,6 +66,12 @@ Eigen::MatrixX3d vertexNormals(const TriangleMesh& mesh) {
 std::vector<int> weldMap(const Eigen::MatrixX3d& vertices, double tol, const std::vector<int>& candidates) {
   std::vector<int> site(vertices.rows());
   std::iota(site.begin(), site.end(), 0);
+  // Union-find whose root is the smallest index: a chain of close pairs (a, b within tol, b, c
+  // within tol) is one cluster even where a and c are farther apart.
+  const auto root = [&](int v) {
+    while (site[v] != v) v = site[v] = site[site[v]];
+    return v;
+  };
   std::vector<int> order = candidates;
   if (order.empty()) order = site;
   // Sweep along x: only pairs within tol in x need the full distance.
@@ -73,10 +79,10 @@ std::vector<int> weldMap(const Eigen::MatrixX3d& vertices, double tol, const std
   for (size_t i = 0; i < order.size(); ++i)
     for (size_t j = i + 1; j < order.size() && vertices(order[j], 0) - vertices(order[i], 0) <= tol; ++j)
       if ((vertices.row(order[i]) - vertices.row(order[j])).norm() <= tol) {
-        const int s = std::min(site[order[i]], site[order[j]]);
-        site[order[i]] = site[order[j]] = s;
+        const int a = root(order[i]), b = root(order[j]);
+        site[std::max(a, b)] = std::min(a, b);
       }
-  for (size_t v = 0; v < site.size(); ++v) site[v] = site[site[v]];
+  for (size_t v = 0; v < site.size(); ++v) site[v] = root(static_cast<int>(v));
   return site;
 }
 

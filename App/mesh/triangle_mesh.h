@@ -35,8 +35,8 @@ double maxInnerAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const E
 // Area-weighted vertex normals (unit; zero for a vertex without non-degenerate triangles).
 Eigen::MatrixX3d vertexNormals(const TriangleMesh& mesh);
 
-// Per vertex, the smallest index of a vertex within `tol` of it (itself when it has no
-// copy): the map that welds coincident copies. Only `candidates` are compared (all when empty).
+// Per vertex, the smallest index of its cluster of vertices joined by pairs within `tol` (itself
+// when it has no copy): the map that welds coincident copies. Only `candidates` are compared (all when empty).
 std::vector<int> weldMap(const Eigen::MatrixX3d& vertices, double tol, const std::vector<int>& candidates = {});
 
 // Number of edges with exactly one triangle once coincident vertices are welded by `weld`

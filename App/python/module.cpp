@@ -2,6 +2,7 @@
 // shapes arrive and leave as BREP text, reports leave as JSON text (rendered
 // once, in the core), errors leave as HoleFillApp.HoleFillError. OCCT and core
 // exceptions are caught here so FreeCAD never goes down with a bad input.
+#include <cmath>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp.hxx>
@@ -376,6 +377,15 @@ PYBIND11_MODULE(HoleFillApp, m) {
   m.def("meshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles) {
     return guarded([&] { return toJson(findMeshHoles(TriangleMesh{vertices, triangles})); });
   }, py::arg("vertices"), py::arg("triangles"), "Boundary loops of a triangle mesh (JSON: holes longest first, topology counts).");
+  m.def("weldVertices", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, double weld) {
+    return guarded([&] {
+      if (!(weld >= 0) || !std::isfinite(weld)) throw Error("weld: a fraction of the diagonal, 0 or more");
+      VertexWeld w = weldVertices(TriangleMesh{vertices, triangles}, weld * boundingDiagonal(vertices));
+      return py::make_tuple(w.mesh.vertices, w.mesh.triangles, w.mergedVertices, w.droppedTriangles);
+    });
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("weld"),
+     "Coincident vertices (within weld × the bounding-box diagonal) merged: (vertices, triangles, merged vertices, dropped "
+     "triangles), as the mesh fill's weld option does first.");
   m.def("fillMeshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<int>& holes,
                             const py::dict& options, const std::function<bool(double)>& progress) {
     return guarded([&] {

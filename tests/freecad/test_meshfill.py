@@ -103,4 +103,40 @@ def test_bad_meshes_give_clear_errors():
     assert back.CountPoints == m.CountPoints and back.CountFacets == m.CountFacets
 
 
+
+
+def test_weld_merges_a_seam_before_filling():
+    """A box whose top is written on copies of its four corners (an exporter's seam) and whose
+    front is cut away: as it is, the seam reads as two more boundary loops; merged first
+    (weld=SEAM_WELD), the one real hole is found and filled into a closed mesh."""
+    import Mesh
+    box = Mesh.createBox(2, 2, 2)
+    pts, fac = box.Topology
+    points, facets, copy = list(pts), [], {}
+    for f in fac:
+        centre = [sum(pts[k][i] for k in f) / 3 for i in range(3)]
+        if abs(centre[1] + 1) < 1e-9:  # the front (y = -1): cut away
+            continue
+        if abs(centre[2] - 1) < 1e-9:  # the top (z = 1): on copies of its corners
+            for k in f:
+                if k not in copy:
+                    copy[k] = len(points)
+                    points.append(pts[k])
+            f = tuple(copy[k] for k in f)
+        facets.append(tuple(f))
+    seamed = Mesh.Mesh((points, facets))
+    assert seamed.CountPoints == 12, seamed.CountPoints
+    as_is = HoleFill.meshHoles(seamed)
+    welded = HoleFill.meshHoles(seamed, weld=HoleFill.SEAM_WELD)
+    assert len(welded) == 1 and len(as_is) > 1, (len(as_is), len(welded))
+    merged, merged_count, dropped = HoleFill.weldVertices(seamed)
+    assert (merged.CountPoints, merged_count, dropped) == (8, 4, 0)
+    filled, rep = HoleFill.fillMeshHoles(seamed, weld=HoleFill.SEAM_WELD)
+    assert rep["closed"] and rep["welded_vertices"] == 4 and rep["dropped_triangles"] == 0, rep
+    assert filled.isSolid() and not filled.hasNonManifolds()
+    assert abs(filled.Volume - 8.0) < 1e-6, filled.Volume
+    assert seamed.CountPoints == 12, "the input mesh was modified"
+    fcharness.expect_error(lambda: HoleFill.fillMeshHoles(seamed, weld=-1.0), "weld")
+
+
 fcharness.run(globals())

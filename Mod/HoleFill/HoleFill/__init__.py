@@ -371,7 +371,8 @@ def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["conti
 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402
-from HoleFill.meshfill import MeshHole, defaultMaxBoundary, fillMeshHoles, makeMeshFill, meshHoles, readMesh, writeMesh  # noqa: E402
+from HoleFill.meshfill import (MeshHole, SEAM_WELD, defaultMaxBoundary, fillMeshHoles, makeMeshFill, meshHoles, readMesh,  # noqa: E402
+                               weldVertices, writeMesh)
 from HoleFill.labeled import fitLabeled, boundaryLoop, cornerSplits, makeBoundaryLabels, makeLabeledFit  # noqa: E402
 from HoleFill.pointcloud import fitPoints, makePointCloudFit, parameterize  # noqa: E402
 from HoleFill.gnurbs import (cageFromShape, cageShell, extraordinaryPoints, gnurbsSurface, importCage, makeGnurbs,  # noqa: E402

@@ -17,7 +17,11 @@ import json
 import HoleFillApp
 from HoleFill import optionDefaults, optionSchema, raiseOnFailure
 
-__all__ = ["meshHoles", "fillMeshHoles", "makeMeshFill", "readMesh", "writeMesh", "MeshHole"]
+__all__ = ["meshHoles", "fillMeshHoles", "makeMeshFill", "weldVertices", "readMesh", "writeMesh", "MeshHole", "SEAM_WELD"]
+
+# The weld a user is offered for seams of duplicated vertices, of the bounding-box diagonal:
+# copies written by an exporter are equal to FreeCAD's float precision (about 1e-7 relative).
+SEAM_WELD = 1e-6
 
 
 class MeshHole(dict):
@@ -53,9 +57,21 @@ def _mesh(vertices, triangles):
     return Mesh.Mesh((points, [tuple(f) for f in triangles.tolist()]))
 
 
-def meshHoles(mesh):
-    """Boundary loops of a mesh (Mesh.Mesh or Mesh feature), longest first, as MeshHole dicts."""
+def weldVertices(mesh, weld=SEAM_WELD):
+    """`mesh` with its coincident vertices (within weld × the bounding-box diagonal) merged, as
+    fillMeshHoles(weld=) does first: (new Mesh.Mesh, merged vertices, dropped triangles)."""
     v, t = _arrays(mesh)
+    wv, wt, merged, dropped = HoleFillApp.weldVertices(v, t, float(weld))
+    return _mesh(wv, wt), merged, dropped
+
+
+def meshHoles(mesh, weld=0):
+    """Boundary loops of a mesh (Mesh.Mesh or Mesh feature), longest first, as MeshHole dicts.
+    weld > 0: of the mesh with its coincident vertices merged first (weldVertices), numbered as
+    fillMeshHoles(weld=) numbers them."""
+    v, t = _arrays(mesh)
+    if weld:
+        v, t, _, _ = HoleFillApp.weldVertices(v, t, float(weld))
     d = json.loads(HoleFillApp.meshHoles(v, t))
     out = []
     for i, h in enumerate(d["holes"]):
@@ -77,7 +93,7 @@ def defaultMaxBoundary():
 def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["refine"], fairIterations=_MF["fairIterations"],
                   smoothIterations=_MF["smoothIterations"], densityFactor=_MF["densityFactor"], closenessScale=_MF["closenessScale"],
                   featureScale=_MF["featureScale"], progress=None, shapeOrder=_MF["shapeOrder"], triangulation=_MF["triangulation"],
-                  shapePasses=_MF["shapePasses"], alongNormals=_MF["alongNormals"]):
+                  shapePasses=_MF["shapePasses"], alongNormals=_MF["alongNormals"], weld=_MF["weld"]):
     """Fill holes of `mesh`; returns (new Mesh.Mesh, report dict).
 
     holes: hole numbers (0-based, as meshHoles numbers them) or MeshHole dicts; None fills every
@@ -91,6 +107,8 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["
     variation. triangulation: "angle" (the paper's minimum-angle ear cutting, default; better
     across creases), "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes)
     or "auto" (per hole: minimum angle where a crease of the surrounding mesh reaches the hole).
+    weld > 0 (e.g. SEAM_WELD): coincident vertices merged first, so that seams of duplicated
+    vertices close; the result then starts with the merged mesh, and hole numbers are meshHoles(mesh, weld)'s.
     The report has per hole: new_vertices, new_triangles, min/max/mean_quality (Field's
     2·r_in/R_circ), share_quality_0_7, seconds, message; and closed / closed_when_welded; its
     status is ok, or warned where holes stay open. When holes were asked for and none could be
@@ -104,7 +122,7 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["
     options = dict(maxBoundary=int(maxBoundary), refine=bool(refine), fairIterations=int(fairIterations),
                    smoothIterations=int(smoothIterations), densityFactor=float(densityFactor), closenessScale=float(closenessScale),
                    featureScale=float(featureScale), shapeOrder=int(shapeOrder), triangulation=str(triangulation),
-                   shapePasses=int(shapePasses), alongNormals=bool(alongNormals))
+                   shapePasses=int(shapePasses), alongNormals=bool(alongNormals), weld=float(weld))
     nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, options, progress)
     return _mesh(nv, nt), raiseOnFailure(json.loads(report), "mesh fill")
 

@@ -13,7 +13,8 @@ TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
   const OptionValues values = {
       {"maxBoundary", "300"},    {"triangulation", "dihedral"}, {"refine", "false"},        {"densityFactor", "2"},
       {"shapeOrder", "3"},       {"shapePasses", "2"},          {"alongNormals", "false"},  {"smoothIterations", "0"},
-      {"fairIterations", "0"},   {"closenessScale", "1.5"},     {"featureScale", "0.25"}};
+      {"fairIterations", "0"},   {"closenessScale", "1.5"},     {"featureScale", "0.25"},
+      {"weld", "1e-06"}};
   setEveryOption(s, o, values);
   EXPECT_EQ(o.maxBoundary, 300);
   EXPECT_EQ(o.initial, MeshFillOptions::Triangulation::MinDihedral);
@@ -26,6 +27,7 @@ TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
   EXPECT_EQ(o.fairing.iterations, 0);
   EXPECT_EQ(o.fairing.closenessScale, 1.5);
   EXPECT_EQ(o.fairing.featureScale, 0.25);
+  EXPECT_EQ(o.weld, 1e-6);
   expectEveryOptionReadsBack(s, o, values);
 }
 
@@ -38,4 +40,5 @@ TEST(MeshFillSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
   MeshFillOptions o;
   EXPECT_THROW(setOption(s, o, "shapeOrder", "4"), Error);
   EXPECT_THROW(setOption(s, o, "triangulation", "delaunay"), Error);
+  EXPECT_THROW(setOption(s, o, "weld", "-1e-6"), Error);
 }
