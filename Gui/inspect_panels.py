@@ -262,7 +262,33 @@ class ContinuityPanel(_Panel):
         self.status.setText(summary)
         self.layout.addRow(self.table)
         self.layout.addRow(self.status)
+        # CurvesWB's curvature combs along the boundary: the normal curvature across it of the
+        # face checked and of its neighbour; where the check says G2 the two coincide.
+        self.obj = obj
+        self.combs = QtWidgets.QCheckBox(translate("HoleFill", "Curvature combs"))
+        self.combs.setObjectName("HoleFillCombs")
+        self.combs.setToolTip(translate("HoleFill", "Along the boundary, the normal curvature across it as comb teeth: the face checked\n"
+                                        "in blue, its neighbour in magenta. Where they coincide the join is G2."))
+        self.combs.toggled.connect(self.showCombs)
+        self.combLegend = QtWidgets.QLabel()
+        self.combLegend.setObjectName("HoleFillCombsLegend")
+        self.combLegend.setWordWrap(True)
+        self.layout.addRow(self.combs)
+        self.layout.addRow(self.combLegend)
         overlay.show_continuity(obj, report)
+
+    def showCombs(self, on):
+        overlay.remove("Combs", self.obj)
+        self.combLegend.setText("")
+        if on:
+            s = overlay.show_combs(self.obj, self.report)
+            self.combLegend.setText(translate("HoleFill", "Combs: blue this face, magenta its neighbour; a tooth of one unit of length "
+                                              "is a curvature of %.3g.") % (1.0 / s) if s > 0 else
+                                    translate("HoleFill", "Combs: both sides are flat across the boundary (curvature 0)."))
+
+    def reject(self):
+        overlay.remove("Combs")
+        return _Panel.reject(self)
 
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Close)

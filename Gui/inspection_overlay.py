@@ -20,7 +20,9 @@ from HoleFillGui.scene_overlay import TIER_COLORS
 translate = FreeCAD.Qt.translate
 
 PREFIX = "HoleFillInspect"
-KINDS = ("Curvature", "Zebra", "Continuity")
+KINDS = ("Curvature", "Zebra", "Continuity", "Combs")
+# The curvature combs: the face measured (the fill) and the face it is measured against.
+COMB_COLORS = {"face": (0.1, 0.35, 0.95), "support": (0.85, 0.1, 0.65)}
 
 
 def scene_targets():
@@ -388,7 +390,7 @@ def show_continuity(obj, report):
             if i - start >= 2:
                 counts.append(i - start)
                 for k in range(start, i):
-                    x, y, z, g0, g1, g2 = samples[k]
+                    x, y, z, g0, g1, g2 = samples[k][:6]
                     pts.append((x, y, z))
                     cols.append(continuity_color(g0 / scale, g1, g2))
             start = i
@@ -399,6 +401,72 @@ def show_continuity(obj, report):
         sep.addChild(n)
     _add("Continuity", obj, sep)
     return sep
+
+
+def comb_teeth(report, length=0.2):
+    """Per edge of the continuity report, the two curvature combs along it (CurvesWB's): for the
+    face and for its support, the samples and the tips of the teeth p − s·κ·n, κ the normal
+    curvature across the boundary, n the face's normal, s one scale for all (the largest |κ|
+    gives length × the report's scale). Returns ({"face": [(points, tips), ...], "support": [...]}, s);
+    s is 0 where every κ is 0 (flat on both sides: teeth of zero length)."""
+    import math
+    samples, edges = report["samples_along"], report["sample_edges"]
+    finite = [abs(r[c]) for r in samples for c in (9, 10) if math.isfinite(r[c])]
+    top = max(finite, default=0.0)
+    s = length * report["scale"] / top if top > 1e-12 / max(report["scale"], 1e-300) else 0.0
+    combs = {"face": [], "support": []}
+    start = 0
+    for i in range(len(samples) + 1):
+        if i == len(samples) or (i > start and edges[i] != edges[start]):
+            run = [r for r in samples[start:i] if all(math.isfinite(x) for x in r[6:11])]
+            if len(run) >= 2:
+                for side, c in (("face", 9), ("support", 10)):
+                    pts = [tuple(r[:3]) for r in run]
+                    tips = [tuple(r[k] - s * r[c] * r[6 + k] for k in range(3)) for r in run]
+                    combs[side].append((pts, tips))
+            start = i
+    return combs, s
+
+
+def show_combs(obj, report, length=0.2, teeth=24):
+    """Draws the curvature combs of comb_teeth over the boundary: the face's in blue, its
+    support's in magenta (COMB_COLORS), about `teeth` teeth per edge (the report samples 200,
+    which drawn all read as a filled band) and the line through every sample's tip.
+    Where the face is G2 the two combs coincide. Returns the scale s."""
+    combs, s = comb_teeth(report, length)
+    sep = coin.SoSeparator()
+    pick = coin.SoPickStyle()
+    pick.style = coin.SoPickStyle.UNPICKABLE
+    depth = coin.SoDepthBuffer()
+    depth.test = False  # teeth on the far side of a face stay visible
+    light = coin.SoLightModel()
+    light.model = coin.SoLightModel.BASE_COLOR
+    for n in (pick, depth, light):
+        sep.addChild(n)
+    for side in ("face", "support"):
+        part = coin.SoSeparator()
+        part.setName("%s_Combs_%s" % (PREFIX, side))
+        col = coin.SoBaseColor()
+        col.rgb.setValue(*COMB_COLORS[side])
+        style = coin.SoDrawStyle()
+        style.lineWidth = 2 if side == "face" else 1.5
+        pts, counts = [], []
+        for base, tips in combs[side]:
+            step = max(1, len(base) // teeth)
+            for k in list(range(0, len(base), step)) + ([len(base) - 1] if (len(base) - 1) % step else []):
+                pts += [base[k], tips[k]]
+                counts.append(2)
+            pts += tips
+            counts.append(len(tips))
+        coords = coin.SoCoordinate3()
+        coords.point.setValues(0, len(pts), pts)
+        lines = coin.SoLineSet()
+        lines.numVertices.setValues(0, len(counts), counts)
+        for n in (col, style, coords, lines):
+            part.addChild(n)
+        sep.addChild(part)
+    _add("Combs", obj, sep)
+    return s
 
 
 class _Watcher:

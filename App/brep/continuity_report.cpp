@@ -98,6 +98,7 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
       const double g0f = (toEigen(supports[best].surface.Value(uvB.X(), uvB.Y())) - jf.p).norm();
       Eigen::Vector3d nf, nb;
       SurfaceJet jb;
+      ContinuitySample sample{jf.p, hole.edges[best].edgeIndex};
       if (supports[best].regularJet(bestT, jb, nb) && unitNormal(jf, nf)) {
         g1 = std::acos(std::min(1.0, std::abs(nf.dot(nb))));
         gp_Pnt p;
@@ -111,12 +112,16 @@ ContinuityReport continuityReport(const TopoDS_Face& face, const Hole& hole, con
           const Eigen::Vector3d acrossF = nfa.cross(T).normalized();
           const double kb = normalCurvature(jb, nb, acrossB), kf = normalCurvature(jf, nfa, acrossF);
           g2 = std::abs(kf - kb) / std::max(std::abs(kb), 1.0 / std::max(r.scale, 1e-300));
+          sample.normal = nfa;
+          sample.curvatureFace = kf;
+          sample.curvatureSupport = kb;
         }
       } else {
         g1 = M_PI / 2;  // singular normal on one side: no tangent plane to agree on
       }
       ++r.samples;
-      r.along.push_back({jf.p, hole.edges[best].edgeIndex, g0, g1, g2});
+      sample.g0 = g0, sample.g1 = g1, sample.g2 = g2;
+      r.along.push_back(sample);
       r.g0 = std::max(r.g0, g0);
       r.g0Face = std::max(r.g0Face, g0f);
       r.g1 = std::max(r.g1, g1);

@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,11 +37,19 @@ struct EdgeContinuity {
   double g1Floor = 0;
 };
 
-// One boundary sample with its deviations, for drawing the boundary coloured by continuity.
+// One boundary sample with its deviations, for drawing the boundary coloured by continuity, and
+// the two normal curvatures across the boundary that G2 compares, for drawing them as curvature
+// combs (CurvesWB's inspection: the two combs coincide where the fill is G2).
 struct ContinuitySample {
   Eigen::Vector3d point;
   int edgeIndex = 0;
   double g0 = 0, g1 = 0, g2 = 0;
+  // The face's unit normal, turned to agree with the support's, and the normal curvatures across
+  // the boundary of the face and of the support, signed against that normal (positive: bending
+  // towards it). NaN where a normal is singular.
+  Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  double curvatureFace = std::numeric_limits<double>::quiet_NaN();
+  double curvatureSupport = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ContinuityReport {

@@ -149,17 +149,20 @@ std::string report(const std::string& faceBrep, const std::string& modelBrep, co
   });
 }
 
-// Continuity report as (JSON text, samples (k x 6: x y z g0 g1 g2), edge index per sample).
+// Continuity report as (JSON text, samples (k x 11: x y z g0 g1 g2, the face's normal nx ny nz,
+// the normal curvatures across the boundary of the face and of the support, NaN where not
+// measured), edge index per sample).
 py::tuple continuityTuple(const ContinuityReport& r) {
   JsonWriter j;
   j.beginObject();
   writeJsonFields(j, r);
   j.endObject();
-  Eigen::MatrixXd samples(static_cast<Eigen::Index>(r.along.size()), 6);
+  Eigen::MatrixXd samples(static_cast<Eigen::Index>(r.along.size()), 11);
   std::vector<int> edges;
   for (size_t i = 0; i < r.along.size(); ++i) {
     const auto& a = r.along[i];
-    samples.row(static_cast<Eigen::Index>(i)) << a.point.transpose(), a.g0, a.g1, a.g2;
+    samples.row(static_cast<Eigen::Index>(i)) << a.point.transpose(), a.g0, a.g1, a.g2, a.normal.transpose(), a.curvatureFace,
+        a.curvatureSupport;
     edges.push_back(a.edgeIndex);
   }
   return py::make_tuple(j.str(), samples, edges);
@@ -369,11 +372,11 @@ PYBIND11_MODULE(HoleFillApp, m) {
       return continuityTuple(faceContinuity(shapeFromBrepString(brep), a, b, o));
     });
   }, py::arg("brep"), py::arg("faceA"), py::arg("faceB"), py::arg("samplesPerEdge") = 200,
-     "Continuity of Face<faceB> against Face<faceA> along their shared edges: (JSON, samples k x 6, edge per sample).");
+     "Continuity of Face<faceB> against Face<faceA> along their shared edges: (JSON, samples k x 11: x y z g0 g1 g2 nx ny nz curvature across of the face and of the support, edge per sample).");
   m.def("continuityAlong", [](const std::string& faceBrep, const std::string& modelBrep, const std::vector<int>& edges) {
     return guarded([&] { return continuityTuple(reportOnHole(faceBrep, modelBrep, edges)); });
   }, py::arg("faceBrep"), py::arg("modelBrep"), py::arg("edges"),
-     "Like continuityReport, with the samples: (JSON, samples k x 6, edge per sample).");
+     "Like continuityReport, with the samples: (JSON, samples k x 11: x y z g0 g1 g2 nx ny nz curvature across of the face and of the support, edge per sample).");
   m.def("meshHoles", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles) {
     return guarded([&] { return toJson(findMeshHoles(TriangleMesh{vertices, triangles})); });
   }, py::arg("vertices"), py::arg("triangles"), "Boundary loops of a triangle mesh (JSON: holes longest first, topology counts).");

@@ -58,6 +58,29 @@ def button(which):
     return None
 
 
+def comb_lengths(node):
+    """{"face"|"support": [tooth length, ...]} read back from the combs overlay's line sets."""
+    import math
+    from pivy import coin
+    out = {}
+    for i in range(node.getNumChildren()):
+        part = node.getChild(i)
+        name = part.getName().getString()
+        if not name.startswith("HoleFillInspect_Combs_"):
+            continue
+        coords = [part.getChild(k) for k in range(part.getNumChildren()) if isinstance(part.getChild(k), coin.SoCoordinate3)][0]
+        lines = [part.getChild(k) for k in range(part.getNumChildren()) if isinstance(part.getChild(k), coin.SoLineSet)][0]
+        pts = [coords.point[k].getValue() for k in range(coords.point.getNum())]
+        teeth, at = [], 0
+        for k in range(lines.numVertices.getNum()):
+            n = lines.numVertices[k]
+            if n == 2:
+                teeth.append(math.dist(pts[at], pts[at + 1]))
+            at += n
+        out[name.rsplit("_", 1)[1]] = teeth
+    return out
+
+
 def body():
     import HoleFill
     import Mesh
@@ -234,9 +257,24 @@ def body():
         theirs = tuple(round(((packed >> shift) & 255) / 255.0, 2) for shift in (24, 16, 8))
         assert all(sum(abs(a - b) for a, b in zip(c, theirs)) > 0.3 for c in drawn), (name, theirs, drawn)
     info["continuity_colours"] = sorted(drawn)
+    # Curvature combs along the boundary (a real click): the fill's and its neighbours'.
+    combs = mw.findChild(QtWidgets.QCheckBox, "HoleFillCombs")
+    h.click_button(combs)
+    h.pump(500)
+    assert combs.isChecked() and len(overlays("Combs")) == 1
+    lengths = comb_lengths(overlays("Combs")[0])
+    # The corner's neighbours are flat across its edges (planes, fillets across their axis): their
+    # teeth have no length, the fill's bend away from its rim.
+    assert set(lengths) == {"face", "support"} and max(lengths["face"]) > 0 and max(lengths["support"]) < 1e-9, \
+        {k: max(v) for k, v in lengths.items()}
+    info["fill_comb_teeth"] = len(lengths["face"])
+    FreeCADGui.SendMsgToActiveView("ViewSelection")  # the fill is selected: its combs close up
+    h.pump(500)
+    view.saveImage(h.shot("gui_inspect_4b_combs_fill.png"), 1024, 768, "White")
+    view.fitAll()
     button(QtWidgets.QDialogButtonBox.Close).click()
     h.pump(500)
-    assert not overlays("Continuity")
+    assert not overlays("Continuity") and not overlays("Combs")
     # ... and on two adjacent faces of the source: a plane against a fillet is G1, not G2.
     import Part
     shape = src.Shape
@@ -256,6 +294,19 @@ def body():
     info["pair"] = pair
     info["pair_g1_g2"] = (table.item(0, 2).text(), table.item(0, 3).text())
     assert float(table.item(0, 2).text()) < 1e-6 and float(table.item(0, 3).text()) > 0.1, info["pair_g1_g2"]
+    # Its combs: one side's teeth are all of one length (the fillet's constant curvature across),
+    # the other's zero (the plane): what "G1, not G2" looks like.
+    h.click_button(mw.findChild(QtWidgets.QCheckBox, "HoleFillCombs"))
+    h.pump(500)
+    lengths = comb_lengths(overlays("Combs")[0])
+    longest = {k: max(v) for k, v in lengths.items()}
+    flat, round_ = sorted(longest, key=longest.get)
+    assert longest[flat] < 1e-9 * longest[round_], longest
+    assert max(lengths[round_]) - min(lengths[round_]) < 1e-6 * longest[round_], lengths[round_][:5]
+    legend = mw.findChild(QtWidgets.QLabel, "HoleFillCombsLegend")
+    assert "curvature of" in legend.text(), legend.text()
+    info["pair_combs"] = longest
+    view.saveImage(h.shot("gui_inspect_4c_combs_pair.png"), 1024, 768, "White")
     button(QtWidgets.QDialogButtonBox.Close).click()
     h.pump(300)
 

@@ -106,8 +106,10 @@ def _continuity(result):
 
 def faceContinuity(shape, faceA, faceB, samplesPerEdge=50):
     """G0/G1/G2 (DESIGN.md) of faceB against faceA of `shape` along the edges they share
-    ("FaceK" names or 1-based indices). The report adds samples_along (k x 6 array: x y z g0 g1 g2)
-    and sample_edges (the edge index of each sample)."""
+    ("FaceK" names or 1-based indices). The report adds samples_along (k x 11 array: x y z g0 g1 g2,
+    then faceB's unit normal nx ny nz turned to agree with faceA's, and the normal curvatures
+    across the edge of faceB and of faceA, signed against that normal; NaN where a normal is
+    singular) and sample_edges (the edge index of each sample)."""
     a, b = _faceIndices([faceA, faceB])
     return _continuity(HoleFillApp.faceContinuity(_brep(shape), a, b, int(samplesPerEdge)))
 
