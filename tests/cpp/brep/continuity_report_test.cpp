@@ -141,6 +141,13 @@ TEST(ContinuityReport, FilletedBoxCornerIsTangentButNotCurvatureContinuous) {
     ++neighbours;
     EXPECT_LT(r.g1, 1e-6);
     EXPECT_NEAR(r.g2, std::sqrt(2.0), 1e-3);
+    // The samples carry what G2 compared, for the combs: the sphere bends by 1/r across (away
+    // from its outward normal: -1/r), the cylinder along its axis not at all.
+    for (const ContinuitySample& s : r.along) {
+      EXPECT_NEAR(s.curvatureFace, -1.0 / 12.0, 1e-6);
+      EXPECT_NEAR(s.curvatureSupport, 0.0, 1e-9);
+      EXPECT_NEAR(s.normal.norm(), 1.0, 1e-12);
+    }
   }
   EXPECT_EQ(neighbours, 3);
 }
