@@ -1,6 +1,8 @@
 """View providers: the Fill object (its icon, the fill in a distinct colour) and the boundary
 labels (segments in their labels' colours, with letters); double-click edits either in its task
 panel."""
+import FreeCAD
+
 import HoleFillGui
 
 
@@ -30,10 +32,40 @@ class _EditInPanel:
         return None
 
 
+def knot_isocurves(face, samples=64):
+    """Polylines [[(x, y, z), ...], ...] of `face`'s B-spline surface along its interior knots
+    (u = knot and v = knot), clipped to the face's trimming loops: where an isoline crosses a
+    loop (the loops' points taken back to (u, v) by the surface), even-odd, so that holes in
+    the face stay empty. Each inside stretch is sampled at about `samples` points per domain width."""
+    surf = face.Surface
+    u0, u1, v0, v1 = surf.bounds()
+    loops = []
+    for wire in face.Wires:
+        pts = wire.discretize(Number=max(64, 32 * len(wire.Edges)))
+        loops.append([surf.parameter(p) for p in pts])
+    out = []
+    for along_u, knots, lo, hi in ((True, surf.getUKnots()[1:-1], v0, v1), (False, surf.getVKnots()[1:-1], u0, u1)):
+        for k in knots:
+            crossings = []
+            for loop in loops:
+                for a, b in zip(loop, loop[1:] + loop[:1]):
+                    ka, kb = (a[0], b[0]) if along_u else (a[1], b[1])
+                    if (ka - k) * (kb - k) < 0:
+                        f = (k - ka) / (kb - ka)
+                        crossings.append((a[1] + f * (b[1] - a[1])) if along_u else (a[0] + f * (b[0] - a[0])))
+            crossings.sort()
+            for start, end in zip(crossings[0::2], crossings[1::2]):
+                n = max(2, int(samples * (end - start) / max(hi - lo, 1e-300)) + 1)
+                ts = [start + (end - start) * i / (n - 1) for i in range(n)]
+                out.append([tuple(surf.value(k, t) if along_u else surf.value(t, k)) for t in ts])
+    return out
+
+
 class FillViewProvider(_EditInPanel):
     """The Fill in its colour, its tree icon (a warning sign when it reaches no tier), and on
-    request (ShowControlPoints) its B-spline surface's poles and control net, as Surface Filling
-    users inspect a patch."""
+    request its B-spline surface's poles and control net (ShowControlPoints), as Surface Filling
+    users inspect a patch, and its knot lines on the face (ShowIsocurves), where the fill's
+    control is dense and where it is coarse."""
 
     def __init__(self, vobj):
         vobj.Proxy = self
@@ -46,13 +78,60 @@ class FillViewProvider(_EditInPanel):
         if not hasattr(vobj, "ShowControlPoints"):
             vobj.addProperty("App::PropertyBool", "ShowControlPoints", "HoleFill",
                              "Draw the fill's B-spline poles and control net over it")
+        if not hasattr(vobj, "ShowIsocurves"):
+            vobj.addProperty("App::PropertyBool", "ShowIsocurves", "HoleFill",
+                             "Draw the fill's knot lines (isocurves at its B-spline knots) on its face")
         self.poles = coin.SoSeparator()
         self.poles.setName("HoleFillPoles")
         vobj.RootNode.addChild(self.poles)
+        self.isocurves = coin.SoSeparator()
+        self.isocurves.setName("HoleFillIsocurves")
+        vobj.RootNode.addChild(self.isocurves)
 
     def onChanged(self, vobj, prop):
         if prop == "ShowControlPoints":
             self.drawPoles(vobj)
+        if prop == "ShowIsocurves":
+            self.drawIsocurves(vobj)
+
+    def patch(self, vobj, wanted):
+        """The fill's B-spline face when the view property `wanted` is on, else None: the Face
+        output, or the patch among a Sewn output's faces (None when it cannot be told)."""
+        obj = vobj.Object
+        if not getattr(vobj, wanted, False) or obj.Shape.isNull():
+            return None
+        face = obj.Shape.Faces[0]
+        if obj.Output != "Face":
+            from HoleFillGui.inspect_panels import patch_of
+            try:
+                face = patch_of(obj.Shape, obj.Source[0].Shape)
+            except Exception:  # the patch cannot be told among the sewn faces: nothing drawn
+                return None
+        return face if face.Surface.__class__.__name__ == "BSplineSurface" else None
+
+    def drawIsocurves(self, vobj):
+        """The knot lines of the fill's surface on its face (knot_isocurves), dark blue, over it."""
+        from pivy import coin
+        node = getattr(self, "isocurves", None)
+        if node is None:
+            return
+        node.removeAllChildren()
+        face = self.patch(vobj, "ShowIsocurves")
+        if face is None:
+            return
+        inverse = vobj.Object.Placement.inverse()
+        lines = [[inverse.multVec(FreeCAD.Vector(*p)) for p in line] for line in knot_isocurves(face)]
+        pick = coin.SoPickStyle()
+        pick.style = coin.SoPickStyle.UNPICKABLE
+        offset = coin.SoPolygonOffset()
+        col = coin.SoBaseColor()
+        col.rgb.setValue(0.05, 0.1, 0.45)
+        coords = coin.SoCoordinate3()
+        coords.point.setValues(0, sum(len(ln) for ln in lines), [[p.x, p.y, p.z] for ln in lines for p in ln])
+        lineset = coin.SoLineSet()
+        lineset.numVertices.setValues(0, len(lines), [len(ln) for ln in lines])
+        for nd in (pick, offset, col, coords, lineset):
+            node.addChild(nd)
 
     def drawPoles(self, vobj):
         """The poles (black points) and the control net (grey lines) of the fill's surface."""
@@ -62,16 +141,8 @@ class FillViewProvider(_EditInPanel):
             return
         poles.removeAllChildren()
         obj = vobj.Object
-        if not getattr(vobj, "ShowControlPoints", False) or obj.Shape.isNull():
-            return
-        face = obj.Shape.Faces[0]
-        if obj.Output != "Face":
-            from HoleFillGui.inspect_panels import patch_of
-            try:
-                face = patch_of(obj.Shape, obj.Source[0].Shape)
-            except Exception:  # the patch cannot be told among the sewn faces: nothing drawn
-                return
-        if face.Surface.__class__.__name__ != "BSplineSurface":
+        face = self.patch(vobj, "ShowControlPoints")
+        if face is None:
             return
         inverse = obj.Placement.inverse()
         grid = [[inverse.multVec(p) for p in row] for row in face.Surface.getPoles()]
@@ -115,6 +186,7 @@ class FillViewProvider(_EditInPanel):
             obj.ViewObject.signalChangeIcon()
         if prop == "Shape" and obj.ViewObject is not None:
             self.drawPoles(obj.ViewObject)
+            self.drawIsocurves(obj.ViewObject)
 
     def claimChildren(self):
         return []

@@ -146,6 +146,27 @@ def body():
     fill.ViewObject.ShowControlPoints = False
     h.pump(200)
     assert node.getNumChildren() == 0
+    # Its knot lines on the face (ShowIsocurves): one or more stretches per interior knot that
+    # crosses the trimmed face, every drawn point on the face.
+    import Part
+    fill.ViewObject.ShowIsocurves = True
+    h.pump(300)
+    search = coin.SoSearchAction()
+    search.setName("HoleFillIsocurves")
+    search.apply(fill.ViewObject.RootNode)
+    iso = search.getPath().getTail()
+    coords = [iso.getChild(i) for i in range(iso.getNumChildren()) if isinstance(iso.getChild(i), coin.SoCoordinate3)][0]
+    lines = [iso.getChild(i) for i in range(iso.getNumChildren()) if isinstance(iso.getChild(i), coin.SoLineSet)][0]
+    knots = len(surf.getUKnots()) + len(surf.getVKnots()) - 4
+    assert knots > 0 and lines.numVertices.getNum() >= 1, (knots, lines.numVertices.getNum())
+    face = fill.Shape.Faces[0]
+    pts = [FreeCAD.Vector(*coords.point[i].getValue()) for i in range(0, coords.point.getNum(), 7)]
+    worst = max(face.distToShape(Part.Vertex(fill.Placement.multVec(p)))[0] for p in pts)
+    assert worst < 1e-3 * face.BoundBox.DiagonalLength, worst
+    view.saveImage(h.shot("gui_fill_4b_isocurves.png"), 1024, 768, "White")
+    fill.ViewObject.ShowIsocurves = False
+    h.pump(200)
+    assert iso.getNumChildren() == 0
     doc.undo()
     h.pump(300)
     assert not [o for o in doc.Objects if o.Name.startswith("Fill")], "undo did not remove the fill"
