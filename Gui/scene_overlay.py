@@ -81,6 +81,28 @@ def face_node(face, name, rgb, transparency, tolerance=None):
     return sep
 
 
+def points_node(name, points, rgb, size):
+    """A separator named `name` drawing each point (x, y, z) as a dot of `size` pixels in colour
+    `rgb`, unlit and in front of the faces (points a fill passes through sit over a hole, or on
+    a face's vertex)."""
+    from pivy import coin
+    sep = coin.SoSeparator()
+    sep.setName(name)
+    depth = coin.SoDepthBuffer()
+    depth.test = False
+    light = coin.SoLightModel()
+    light.model = coin.SoLightModel.BASE_COLOR
+    col = coin.SoBaseColor()
+    col.rgb.setValue(*rgb)
+    style = coin.SoDrawStyle()
+    style.pointSize = size
+    coords = coin.SoCoordinate3()
+    coords.point.setValues(0, len(points), [list(p) for p in points])
+    for nd in (depth, light, col, style, coords, coin.SoPointSet()):
+        sep.addChild(nd)
+    return sep
+
+
 def polyline_node(name, polylines, rgb, width):
     """A separator named `name` drawing each polyline (a list of (x, y, z)) in colour `rgb`,
     `width` pixels wide, unlit and drawn over the faces it runs along (a hole's edges lie on the

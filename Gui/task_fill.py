@@ -1,5 +1,6 @@
 """The Fill task panel: the hole (from the selection; one edge names its loop), method, continuity
-and tolerance, a Preview that shows the fill as a view-only overlay with its continuity report,
+and tolerance, points inside the hole the fill passes through (Surface Filling's vertex
+constraints: selected vertices added, drawn as dots), a Preview that shows the fill as a view-only overlay with its continuity report,
 OK to make the Fill object (or change the one being edited) in one undo step, Cancel to leave
 the document exactly as it was. The hole is read and found once (HoleFill.PreparedHole): every
 Preview reuses it, and OK hands it to the Fill object, whose first recompute neither reads the
@@ -50,12 +51,16 @@ def formatReport(report):
         lines.append("Already invalid before the fill: " + ", ".join("Face%d" % f for f in report["invalid_before"]))
     if report["faulty_edges"]:
         lines.append("Worst edges: " + ", ".join("Edge%d" % e for e in report["faulty_edges"]))
+    if report.get("point_distances"):
+        lines.append("Points passed through: %d, farthest %.3g" % (len(report["point_distances"]), max(report["point_distances"])))
     return "\n".join(lines)
 
 
 EDGE_CHOICES = ("auto", "G0", "G1", "G2")  # auto: the panel's continuity, G0 where a crease is found
 OVERLAY = "HoleFillFillPreview"
 LOOP = "HoleFillFillLoop"       # the hole's loop, drawn while the panel is open
+POINTS = "HoleFillFillPoints"   # the points the fill passes through, drawn while the panel is open
+COLOR_POINTS = (0.1, 0.1, 0.1)
 # The loop before a Preview (magenta), and after it the edges that reach what they were asked and
 # those that miss it, in the tiers' colours.
 COLOR_LOOP, COLOR_MET, COLOR_MISSED = (0.85, 0.15, 0.85), scene_overlay.TIER_COLORS["G2"], scene_overlay.TIER_COLORS["none"]
@@ -118,6 +123,22 @@ class FillTaskPanel(task_dialog.Panel):
         self.tolerance.setSpecialValueText(translate("HoleFill", "auto (1e-6 of hole size)"))
         self.tolerance.setToolTip(tips["tolerance"])
         lay.addRow(translate("HoleFill", "G0 tolerance:"), self.tolerance)
+        # Surface Filling's vertex constraints: points inside the hole the face passes through.
+        self.points = []
+        self.pointsLabel = QtWidgets.QLabel()
+        self.pointsLabel.setObjectName("HoleFillFillPointsLabel")
+        self.pointsLabel.setWordWrap(True)
+        lay.addRow(translate("HoleFill", "Pass through:"), self.pointsLabel)
+        pointRow = QtWidgets.QHBoxLayout()
+        self.addPoints = QtWidgets.QPushButton(translate("HoleFill", "Add selected"))
+        self.addPoints.setObjectName("HoleFillFillAddPoints")
+        self.addPoints.setToolTip(translate("HoleFill", "Add the selected vertices (of any object, e.g. a Draft point or a sketch)\n"
+                                            "as points inside the hole that the fill passes through"))
+        self.clearPoints = QtWidgets.QPushButton(translate("HoleFill", "Clear"))
+        self.clearPoints.setObjectName("HoleFillFillClearPoints")
+        pointRow.addWidget(self.addPoints)
+        pointRow.addWidget(self.clearPoints)
+        lay.addRow(pointRow)
         self.output = QtWidgets.QComboBox()
         self.output.addItems(list(fill_feature.OUTPUTS))
         lay.addRow(translate("HoleFill", "Output:"), self.output)
@@ -143,6 +164,8 @@ class FillTaskPanel(task_dialog.Panel):
         self.report.setMinimumHeight(140)
         lay.addRow(self.report)
         self.useSel.clicked.connect(self.takeSelection)
+        self.addPoints.clicked.connect(self.takePoints)
+        self.clearPoints.clicked.connect(lambda: self.setPoints([]))
         self.preview.clicked.connect(self.runPreview)
         self.showProjection.toggled.connect(self.updateProjection)
 
@@ -155,6 +178,7 @@ class FillTaskPanel(task_dialog.Panel):
             self.continuity.setCurrentText(existing.Continuity)
             self.tolerance.setValue(float(existing.Tolerance))
             self.output.setCurrentText(existing.Output)
+            self.setPoints([(p.x, p.y, p.z) for p in getattr(existing, "Points", [])])
         else:
             # A new fill starts from the user's preferences (Edit → Preferences → HoleFill).
             self.method.setCurrentText(preferences.get("FillMethod"))
@@ -162,6 +186,7 @@ class FillTaskPanel(task_dialog.Panel):
             self.tolerance.setValue(preferences.get("FillTolerance"))
             self.output.setCurrentText(preferences.get("FillOutput"))
             self.takeSelection()
+            self.setPoints([])
         self.showHole()
         if existing is not None:
             asked = fill_feature.edgeContinuityDict(getattr(existing, "EdgeContinuity", []))
@@ -173,6 +198,33 @@ class FillTaskPanel(task_dialog.Panel):
                 self.showReport(json.loads(existing.Report))
                 # Kept on purpose once (it reaches no tier): an edit that changes nothing keeps it.
                 self.keepAnyway.setChecked(existing.Achieved == "none")
+
+    def setPoints(self, points):
+        """The points to pass through, listed in the panel and drawn as dots."""
+        self.points = [tuple(p) for p in points]
+        self.pointsLabel.setText(translate("HoleFill", "%d points") % len(self.points) if self.points else
+                                 translate("HoleFill", "none (select vertices, then Add selected)"))
+        scene_overlay.remove(POINTS)
+        if self.points and FreeCAD.GuiUp and FreeCADGui.ActiveDocument is not None:
+            root = scene_overlay.placed_root(POINTS, FreeCAD.Placement())  # global coordinates
+            root.addChild(scene_overlay.points_node(POINTS + "_dots", self.points, COLOR_POINTS, 9))
+            scene_overlay.show(root)
+
+    def takePoints(self):
+        """Adds the selected vertices (global coordinates; a vertex-only object's vertices when the
+        object itself is selected, as a Draft point) to the points to pass through."""
+        found = []
+        for sel in FreeCADGui.Selection.getSelectionEx():
+            vertices = [v for v in sel.SubObjects if v.ShapeType == "Vertex"]
+            shape = getattr(sel.Object, "Shape", None)
+            if not sel.SubObjects and shape is not None and not shape.isNull() and not shape.Edges:
+                vertices = shape.Vertexes
+            found += [(v.Point.x, v.Point.y, v.Point.z) for v in vertices]
+        if not found:
+            self.report.setPlainText(translate("HoleFill", "No vertex is selected: select vertices (or Draft points) inside the hole, "
+                                               "then press Add selected."))
+            return
+        self.setPoints(self.points + [p for p in found if p not in self.points])
 
     def takeSelection(self):
         src, edges = _selectedHole()
@@ -342,7 +394,8 @@ class FillTaskPanel(task_dialog.Panel):
         return dict(method=self.method.currentText(), continuity=self.continuity.currentText(), tolerance=self.tolerance.value(),
                     angularTolerance=self.obj.AngularTolerance if self.obj is not None else preferences.get("FillAngularTolerance"),
                     edgeContinuity=fill_feature.edgeContinuityDict(self.edgeRequests()),
-                    weights=self.obj.Weights if self.obj is not None else preferences.get("UvtranWeights"))
+                    weights=self.obj.Weights if self.obj is not None else preferences.get("UvtranWeights"),
+                    points=list(self.points))
 
     def prepared(self):
         """The hole of the current source and edges, read and found once."""
@@ -407,4 +460,5 @@ class FillTaskPanel(task_dialog.Panel):
         from HoleFillGui import projection_overlay
         projection_overlay.hide()
         scene_overlay.remove(LOOP)
+        scene_overlay.remove(POINTS)
         task_dialog.Panel.release(self)

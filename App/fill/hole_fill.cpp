@@ -21,6 +21,8 @@
 #include "fill/reachable_normals.h"
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
+#include "geometry/polygon2d.h"
+#include "geometry/surface_projection.h"
 #include "geometry/tolerances.h"
 
 namespace holefill {
@@ -164,6 +166,14 @@ void classify(HoleFillResult& r, const HoleFillOptions& opt) {
     r.message = "requested " + r.requested + " but reached " + r.achieved + " (G0 " + std::to_string(r.report.g0) +
                 ", G1 " + std::to_string(r.report.g1) + " rad, G2 " + std::to_string(r.report.g2) +
                 "); worst at " + edgeList(r.faultyEdges);
+  } else if (!r.pointDistances.empty() &&
+             *std::max_element(r.pointDistances.begin(), r.pointDistances.end()) > r.g0Tolerance) {
+    const auto worst = std::max_element(r.pointDistances.begin(), r.pointDistances.end());
+    r.status = FillStatus::ToleranceNotMet;
+    r.failedStage = FillStage::Solve;
+    r.message = "reached " + r.achieved + " at the boundary, but passes point " + std::to_string(worst - r.pointDistances.begin() + 1) +
+                " of " + std::to_string(r.pointDistances.size()) + " at " + std::to_string(*worst) + " (G0 tolerance " +
+                std::to_string(r.g0Tolerance) + ")";
   } else {
     r.status = FillStatus::Ok;
     r.failedStage = FillStage::None;
@@ -176,6 +186,40 @@ void classify(HoleFillResult& r, const HoleFillOptions& opt) {
     if (!relaxed.empty())
       r.message += "; " + edgeList(relaxed) + " met only to the model's own accuracy there (its edge tolerance, "
                    "or the angle at which its neighbour meets it or its corners: tolerance_before and g1_floor per edge)";
+  }
+}
+
+// The points' distances to the face's surface (model units).
+std::vector<double> passDistances(const BSplineSurface& surface, const std::vector<Eigen::Vector3d>& points) {
+  std::vector<double> d;
+  for (const Eigen::Vector3d& p : points) d.push_back(projectSequence(surface, {p}).distance[0]);
+  return d;
+}
+
+// The pass points (HoleFillOptions::points, model units) on the domain: where a fill without them
+// comes nearest to each (a quick solve: one refinement round), which must lie inside the
+// trimming loop. Normalized as the samples are; Error for a point that is not over the hole.
+void placePassPoints(FillConstraints& c, const std::vector<Eigen::Vector3d>& points, const Parameterization& P,
+                     const Eigen::Vector3d& centre, double scale, const VariationalFillOptions& so) {
+  VariationalFillOptions quick = so;
+  quick.maxRefinements = 1;
+  quick.progress = nullptr;
+  c.passUV.clear();
+  c.passXYZ.clear();
+  const BSplineSurface first = solveVariationalFill(c, P.u0, P.u1, P.v0, P.v1, P.knotsU, P.knotsV, quick).surface;
+  const Polygon2 loop(P.uv.begin(), P.uv.end());
+  for (size_t k = 0; k < points.size(); ++k) {
+    if (!points[k].allFinite()) throw Error("point " + std::to_string(k + 1) + " to pass through is not finite");
+    const Eigen::Vector3d unit = (points[k] - centre) / scale;
+    const Eigen::Vector2d uv = projectSequence(first, {unit}).uv[0];
+    if (!contains(loop, uv)) {
+      char xyz[120];
+      std::snprintf(xyz, sizeof xyz, "(%.6g, %.6g, %.6g)", points[k].x(), points[k].y(), points[k].z());
+      throw Error("point " + std::to_string(k + 1) + " " + xyz + " to pass through is not over the hole: the fill nearest to it " +
+                  "is outside its boundary; pick points inside the hole");
+    }
+    c.passUV.push_back(uv);
+    c.passXYZ.push_back(unit);
   }
 }
 
@@ -468,6 +512,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         }
         c.referenceUV = a.P.interiorUV;
         c.referenceXYZ = a.P.interiorXYZ;
+        if (!opt.points.empty()) placePassPoints(c, opt.points, a.P, sd.centre, scale, so);
         VariationalFillOptions sa = so;
         if (report) sa.progress = [&](double f) { return progress(0.1 + 0.75 * f); };
         a.vf = solveVariationalFill(c, a.P.u0, a.P.u1, a.P.v0, a.P.v1, a.P.knotsU, a.P.knotsV, sa);
@@ -529,6 +574,7 @@ HoleFillResult fillHoleOf(const TopoDS_Shape& work, const Hole& givenHole, const
         r.timings.build += since(tb);
         at = FillStage::Check;
         tb = Clock::now();
+        ri.pointDistances = passDistances(surf, opt.points);
         judge(ri, strict, opt.sew);
         detachFace(hole, built);
         r.timings.check += since(tb);
@@ -774,6 +820,9 @@ std::string toJson(const HoleFillResult& r) {
   j.endArray();
   writeJsonFields(j, r.report);
   j.field("g0_tolerance", r.g0Tolerance);
+  j.key("point_distances").beginArray();  // per point to pass through, model units
+  for (double d : r.pointDistances) j.value(d);
+  j.endArray();
   j.field("invalid_before", r.invalidBefore);
   j.field("face_valid", r.faceValid).field("shape_valid", r.shapeValid).field("closed_solid", r.closedSolid);
   j.field("volume", r.volume).field("poles_u", r.polesU).field("poles_v", r.polesV).field("refinements", r.refinements);

@@ -36,6 +36,11 @@ struct HoleFillOptions {
   double tolerance = 0.0;           // G0 tolerance, model units; 0 means 1e-6 x hole scale (DESIGN strict tier)
   double angularTolerance = 1e-3;   // G1 tolerance, radians
   double curvatureTolerance = 0.1;  // G2 tolerance, relative
+  // Points inside the hole the face passes through, model units (Surface Filling's vertex
+  // constraints): each placed on the domain where a fill without them comes nearest to it (it
+  // must lie over the hole: its place inside the trimming loop), then held to the G0 tolerance
+  // as the boundary is. A point the face misses by more makes the fill tolerance_not_met.
+  std::vector<Eigen::Vector3d> points;
   bool modelAccuracy = true;        // judge each edge no stricter than the model is there: G0 within the edge's
                                     // own BRep tolerance where larger, G1 within angularTolerance beyond the angle
                                     // at which the neighbour meets the edge's curve (continuity_report.h g1Floor);
@@ -108,6 +113,7 @@ struct HoleFillResult {
   ContinuityReport report;
   std::string requested, achieved;  // "G0".."G2"; achieved may be "none": the highest k every edge reaches
                                     // as far as it was asked (min(k, asked)), so a crease at G0 does not lower it
+  std::vector<double> pointDistances;     // per HoleFillOptions::points: its distance to the face's surface, model units
   std::vector<EdgeRequest> edgeRequests;  // per loop edge: what was asked and why
   std::vector<int> edgeReached;           // per loop edge (same order): highest level reached, -1 none
   double g0Tolerance = 0;           // model units, as applied

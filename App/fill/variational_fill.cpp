@@ -191,8 +191,10 @@ BSplineSurface toSurface(const std::vector<double>& U, const std::vector<double>
 }
 
 struct Errors {
-  double g0 = 0, g1 = 0, g2 = 0;
+  double g0 = 0, g1 = 0, g2 = 0;  // g0 includes the pass points'
+  double pass = 0;
   std::vector<int> violating;
+  std::vector<int> violatingPass;  // pass points missed
 };
 
 // Jet of the solution x at a sample, from its precomputed local basis (no basis re-evaluation).
@@ -213,9 +215,15 @@ SurfaceJet jetAt(const LocalBasis& b, const Eigen::VectorXd& x, int nv, bool sec
   return j;
 }
 
-Errors measure(const std::vector<LocalBasis>& basis, const Eigen::VectorXd& x, int nv, const FillConstraints& c,
-               const VariationalFillOptions& o) {
+Errors measure(const std::vector<LocalBasis>& basis, const std::vector<LocalBasis>& passBasis, const Eigen::VectorXd& x, int nv,
+               const FillConstraints& c, const VariationalFillOptions& o) {
   Errors e;
+  for (size_t p = 0; p < c.passUV.size(); ++p) {
+    const double d = (jetAt(passBasis[p], x, nv, false).p - c.passXYZ[p]).norm();
+    e.pass = std::max(e.pass, d);
+    if (d > o.g0Tolerance) e.violatingPass.push_back(static_cast<int>(p));
+  }
+  e.g0 = e.pass;
   const bool second = o.continuity == Continuity::G2;
   for (size_t k = 0; k < c.size(); ++k) {
     const SurfaceJet j = jetAt(basis[k], x, nv, second);
@@ -268,6 +276,9 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
                                            const VariationalFillOptions& o) {
   HF_CHECK(c.size() >= 6, "the fill needs at least 6 boundary samples");
   HF_CHECK(c.order.empty() || c.order.size() == c.size(), "one continuity order per boundary sample");
+  HF_CHECK(c.passUV.size() == c.passXYZ.size(), "one position per pass point");
+  for (size_t p = 0; p < c.passUV.size(); ++p)
+    if (!c.passUV[p].allFinite() || !c.passXYZ[p].allFinite()) throw Error("pass point " + std::to_string(p) + " is not finite");
   HF_CHECK(u1 > u0 && v1 > v0, "the fill domain is empty");
   for (size_t k = 0; k < c.size(); ++k)
     if (!c.uv[k].allFinite() || !c.point[k].allFinite() || !std::isfinite(c.curvature[k]))
@@ -294,6 +305,8 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     std::vector<LocalBasis> basis;
     basis.reserve(c.size());
     for (size_t k = 0; k < c.size(); ++k) basis.push_back(localBasis(U, V, c.uv[k].x(), c.uv[k].y(), order));
+    std::vector<LocalBasis> passBasis;
+    for (const Eigen::Vector2d& uv : c.passUV) passBasis.push_back(localBasis(U, V, uv.x(), uv.y(), 0));
     // Penalties are relative to the fairness stiffness, which grows like h^-5 as spans shrink, and
     // each row is normalized by its own coefficient norm: every constraint then outweighs the
     // fairness of the poles it touches by the same factor at every refinement level.
@@ -331,6 +344,12 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
           sys.rows.push_back({bk.su, bk.sv, coef, Eigen::Vector3d::Unit(d), target(d),
                               rowWeight(o.tangentGuideWeight, coef, k), false, int(k)});
       }
+    // A pass point weighs as a boundary sample of the mean arc-length weight.
+    for (size_t p = 0; p < c.passUV.size(); ++p) {
+      const LocalBasis& b = passBasis[p];
+      const double w = o.positionWeight * stiffness / std::max(b.n.squaredNorm(), 1e-300);
+      for (int d = 0; d < 3; ++d) sys.rows.push_back({b.su, b.sv, b.n, Eigen::Vector3d::Unit(d), c.passXYZ[p](d), w, true, -1});
+    }
     for (size_t k = 0; k < c.referenceUV.size(); ++k) {
       const LocalBasis b = localBasis(U, V, c.referenceUV[k].x(), c.referenceUV[k].y(), 0);
       for (int d = 0; d < 3; ++d)
@@ -374,12 +393,12 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       std::vector<double> history;
       for (int it = 0; it <= o.multiplierIterations; ++it, ++iterations) {
         x = sys.solve(rhs(sys, targets));
-        const Errors e = measure(basis, x, sys.nv, c, o);
+        const Errors e = measure(basis, passBasis, x, sys.nv, c, o);
         if (it == 0 || better(e, levelBest, o)) { levelBest = e; levelX = x; }
         // Keep iterating past the tolerance: the multiplier rounds are cheap and the margin
         // is what the interior (set only through the boundary) inherits.
         const double ratio = worstRatio(e, o);
-        if (e.violating.empty() && ratio < o.multiplierMargin) break;
+        if (e.violating.empty() && e.violatingPass.empty() && ratio < o.multiplierMargin) break;
         // Stalled: more rounds will not pay. Above the tolerance the knots, not the multipliers,
         // are what is missing; below it the remaining error is the discretization's.
         history.push_back(ratio);
@@ -391,14 +410,14 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       // fresh start lets the next round's own multiplier rounds run on to the margin, which the
       // interior inherits (a patch refilled on its own pcurves at G2 moved 1.2e-6 of its size off
       // itself when a met round's multipliers were carried and the next round stopped at once).
-      if (levelBest.violating.empty()) carried.clear();
+      if (levelBest.violating.empty() && levelBest.violatingPass.empty()) carried.clear();
       else carried.assign(targets.begin(), targets.begin() + fixedRows);
       x = levelX;
       if (std::getenv("HOLEFILL_DEBUG"))
         std::fprintf(stderr, "[fill] level %d poles %dx%d cr %d: g0 %.3g g1 %.3g g2 %.3g violating %zu; assemble %.3fs, %d rounds %.3fs\n",
                      level, sys.nu, sys.nv, cr, levelBest.g0, levelBest.g1, levelBest.g2, levelBest.violating.size(), tAssemble,
                      iterations, std::chrono::duration<double>(std::chrono::steady_clock::now() - ti).count());
-      if (!haveBest || better(levelBest, bestErr, o) || levelBest.violating.empty()) {
+      if (!haveBest || better(levelBest, bestErr, o) || (levelBest.violating.empty() && levelBest.violatingPass.empty())) {
         bestErr = levelBest;
         res.surface = toSurface(U, V, x);
         haveBest = true;
@@ -406,7 +425,7 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
     }
     res.refinements = level;
     if (o.progress && !o.progress(double(level + 1) / totalRounds)) { res.cancelled = true; break; }
-    if (bestErr.violating.empty() || level == o.maxRefinements) break;
+    if ((bestErr.violating.empty() && bestErr.violatingPass.empty()) || level == o.maxRefinements) break;
     // Refine: split every u-span and v-span that holds a violating sample and enough samples.
     std::map<int, int> inU, inV;  // samples per span
     for (size_t k = 0; k < c.size(); ++k) {
@@ -421,6 +440,13 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
       else blocked = true;
       if (inV[sv] >= o.minSamplesPerSplit) newV.insert(0.5 * (V[sv] + V[sv + 1]));
       else blocked = true;
+    }
+    // A missed pass point's spans are split whatever they hold: the point pins its own span
+    // (the boundary's rule is about spans between boundary samples).
+    for (int p : bestErr.violatingPass) {
+      const int su = findSpan(U, P, c.passUV[p].x()), sv = findSpan(V, P, c.passUV[p].y());
+      newU.insert(0.5 * (U[su] + U[su + 1]));
+      newV.insert(0.5 * (V[sv] + V[sv + 1]));
     }
     // A blocked span needs denser samples, not knots: say so, and stop once the splits that
     // remain possible no longer help (they refine the other direction only).
@@ -448,8 +474,9 @@ VariationalFillResult solveVariationalFill(const FillConstraints& c, double u0, 
   res.g0 = bestErr.g0;
   res.g1 = bestErr.g1;
   res.g2 = bestErr.g2;
+  res.passError = bestErr.pass;
   res.violatingSamples = bestErr.violating;
-  res.toleranceMet = bestErr.violating.empty();
+  res.toleranceMet = bestErr.violating.empty() && bestErr.violatingPass.empty();
   res.levelMet = levelMet(bestErr, o);
   res.worstRatio = worstRatio(bestErr, o);
   return res;

@@ -48,6 +48,11 @@ struct FillConstraints {
   std::vector<int> order;                // continuity imposed at each sample (0..2, at most the options'); empty: the options'
   std::vector<Eigen::Vector2d> referenceUV;   // optional soft interior reference points
   std::vector<Eigen::Vector3d> referenceXYZ;
+  // Points inside the hole the surface passes through (GeomPlate's point constraints, Surface
+  // Filling's "vertices"): S(passUV_p) = passXYZ_p, held to the G0 tolerance as the boundary is
+  // (position rows with multipliers; spans holding a missed one are split).
+  std::vector<Eigen::Vector2d> passUV;
+  std::vector<Eigen::Vector3d> passXYZ;
   size_t size() const { return uv.size(); }
   // The continuity order imposed at sample k under `highest` (a crease edge's samples ask G0 only).
   int orderAt(size_t k, Continuity highest) const {
@@ -83,6 +88,7 @@ struct VariationalFillOptions {
 struct VariationalFillResult {
   BSplineSurface surface;
   double g0 = 0, g1 = 0, g2 = 0;  // max errors at the samples (solve units, radians, relative)
+  double passError = 0;           // max |S(passUV) - passXYZ| (solve units); counted as G0
   bool toleranceMet = false;
   int levelMet = -1;           // highest order met in sequence at the samples: -1 none, 0 G0, 1 G0+G1, 2 all
   double worstRatio = 0;       // the worst error relative to its tolerance at the samples

@@ -1,14 +1,41 @@
 #include "options/hole_fill_schema.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "brep/edge_continuity.h"
+#include "geometry/error.h"
+#include "geometry/text_file.h"
 
 namespace holefill {
 
 namespace {
 
 using O = HoleFillOptions;
+
+// "x,y,z;x,y,z;..." (spaces allowed around the numbers); empty: none.
+std::vector<Eigen::Vector3d> parsePointList(const std::string& text, const std::string& name) {
+  std::vector<Eigen::Vector3d> out;
+  std::stringstream points(text);
+  std::string item;
+  while (std::getline(points, item, ';')) {
+    if (item.find_first_not_of(" \t") == std::string::npos) continue;
+    std::stringstream coords(item);
+    std::string c;
+    Eigen::Vector3d p;
+    int n = 0;
+    while (std::getline(coords, c, ',')) {
+      const size_t a = c.find_first_not_of(" \t"), b = c.find_last_not_of(" \t");
+      double x = 0;
+      if (n >= 3 || a == std::string::npos || !parseDouble(c.substr(a, b - a + 1), x) || !std::isfinite(x))
+        throw Error(name + ": '" + item + "' is not a point x,y,z of three finite numbers");
+      p(n++) = x;
+    }
+    if (n != 3) throw Error(name + ": '" + item + "' is not a point x,y,z of three finite numbers");
+    out.push_back(p);
+  }
+  return out;
+}
 
 OptionBinding<O> methodOption() {
   OptionField f{"method", "--method", OptionKind::Choice, "",
@@ -41,6 +68,19 @@ OptionBinding<O> edgeContinuityOption() {
           }};
 }
 
+OptionBinding<O> pointsOption() {
+  OptionField f{"points", "--points", OptionKind::Text, "",
+                "points inside the hole the face passes through, model units: x,y,z;x,y,z;... (Surface Filling's vertex constraints)"};
+  return {f,
+          [](const O& o) {
+            std::string s;
+            for (const Eigen::Vector3d& p : o.points)
+              s += (s.empty() ? "" : ";") + formatOptionNumber(p.x()) + "," + formatOptionNumber(p.y()) + "," + formatOptionNumber(p.z());
+            return s;
+          },
+          [](O& o, const std::string& t) { o.points = parsePointList(t, "points"); }};
+}
+
 }  // namespace
 
 const OptionSchema<HoleFillOptions>& holeFillSchema() {
@@ -61,6 +101,7 @@ const OptionSchema<HoleFillOptions>& holeFillSchema() {
                                      "the most poles the solver's refinement may reach (a cubic patch has 16 at least)", 16),
                          [](O& o) -> int& { return o.solver.maxControlPoints; }),
         edgeContinuityOption(),
+        pointsOption(),
         boolOption<O>(flagField("detectCreases", "--no-crease-detection", false,
                               "ask G0 of the edges where the loop's corners show the model was sharp"),
                       [](O& o) -> bool& { return o.edges.detectCreases; }),

@@ -25,6 +25,14 @@ check "--hole all fills both holes of a sheet" "[ \$(grep -c '^hole' $T/both.txt
 "$H" fill "$T/panel_6_sided.brep" --edges "$edge" --edge-continuity "$edge=G0" --out "$T/ec.brep" --json >"$T/ec.json"
 check "--edge-continuity asks G0 of $edge, G1 of the others, and says so per edge" \
   "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))[0]; p={\"Edge%d\" % e[\"edge\"]: e for e in r[\"edge_continuity\"]}; assert r[\"status\"]==\"ok\" and p[sys.argv[2]][\"asked\"]==\"G0\" and p[sys.argv[2]][\"source\"]==\"override\" and all(e[\"asked\"]==\"G1\" for k, e in p.items() if k != sys.argv[2])' $T/ec.json $edge"
+# Points to pass through: the open box's top through a point 2 above it; one beside the hole is
+# refused (exit 2, nothing written).
+"$H" fill "$T/box_minus_face.brep" --continuity G0 --points "15,10,12" --out "$T/pts.brep" --json >"$T/pts.json"
+check "--points: the face passes through the point within the G0 tolerance" \
+  "/usr/bin/python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))[0]; assert r[\"status\"]==\"ok\" and len(r[\"point_distances\"])==1 and r[\"point_distances\"][0] <= r[\"g0_tolerance\"]' $T/pts.json"
+"$H" fill "$T/box_minus_face.brep" --continuity G0 --method np --points "45,10,10" --out "$T/pts_out.brep" >/dev/null 2>"$T/pts_out.err"
+rc=$?
+check "--points beside the hole: exit 2, says why, writes nothing" "[ $rc = 2 ] && grep -q 'not over the hole' $T/pts_out.err && [ ! -e $T/pts_out.brep ]"
 # Per edge, the model's own accuracy beside the errors; --no-model-accuracy judges by the tiers alone.
 "$H" fill "$T/panel_6_sided.brep" --edges "$edge" --no-model-accuracy --out "$T/nma.brep" --json >"$T/nma.json"
 check "per_edge reports tolerance_before and g1_floor; --no-model-accuracy is accepted" \

@@ -181,6 +181,40 @@ def test_make_fill_is_parametric_and_leaves_source_alone():
     FreeCAD.closeDocument(doc.Name)
 
 
+def test_points_to_pass_through_from_every_door():
+    """fillHole(points=) and the Fill's Points property: the face passes through a point 2 above
+    the open top of a 30 x 20 x 10 box; the Fill follows its source with it, keeps it over a save
+    and reload, and a point beside the hole is refused with its number and coordinates."""
+    shape = load("box_minus_face")
+    face, _, rep = HoleFill.fillHole(shape, 1, continuity="G0", points=[(15, 10, 12)])
+    assert rep["status"] == "ok" and len(rep["point_distances"]) == 1, rep["message"]
+    assert face.distToShape(Part.Vertex(FreeCAD.Vector(15, 10, 12)))[0] <= rep["g0_tolerance"]
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, continuity="G0", method="np", points=[(45, 10, 10)]),
+                           "point 1 (45, 10, 10) to pass through is not over the hole")
+    fcharness.expect_error(lambda: HoleFill.fillHole(shape, 1, points=[(1, 2)]), "points")
+    doc = FreeCAD.newDocument("HoleFillPoints")
+    src = doc.addObject("Part::Feature", "Box")
+    src.Shape = shape
+    doc.recompute()
+    fill = HoleFill.makeFill(src, HoleFill.findHoles(shape)[0].edges[:1], continuity="G0", points=[FreeCAD.Vector(15, 10, 12)])
+    assert fill.Status == "ok" and len(fill.Points) == 1, fill.Status
+    assert fill.Shape.distToShape(Part.Vertex(FreeCAD.Vector(15, 10, 12)))[0] < 1e-4
+    import tempfile
+    path = os.path.join(tempfile.mkdtemp(), "points.FCStd")
+    doc.saveAs(path)
+    name = fill.Name
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    fill = doc.getObject(name)
+    assert [tuple(p) for p in fill.Points] == [(15.0, 10.0, 12.0)]
+    fill.touch()
+    doc.recompute()
+    assert fill.Status == "ok" and fill.Shape.distToShape(Part.Vertex(FreeCAD.Vector(15, 10, 12)))[0] < 1e-4
+    FreeCAD.closeDocument(doc.Name)
+    os.remove(path)
+    os.rmdir(os.path.dirname(path))
+
+
 def test_prepared_hole_is_filled_again_from_what_it_kept():
     shape = load("panel_6_sided")
     before = shape.exportBrepToString()

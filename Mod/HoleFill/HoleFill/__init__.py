@@ -72,8 +72,20 @@ def edgeContinuityEntries(edgeContinuity):
     return ["%s=%s" % (("Edge%d" % e) if isinstance(e, int) else e, c) for e, c in dict(edgeContinuity or {}).items()]
 
 
+def pointList(points):
+    """Points ((x, y, z) triples or FreeCAD.Vectors) as the core's points option spells them: "x,y,z;x,y,z"."""
+    out = []
+    for k, p in enumerate(points or []):
+        try:
+            x, y, z = (float(c) for c in p)
+        except (TypeError, ValueError):
+            raise HoleFillError("points: point %d (%r) is not three numbers x, y, z" % (k + 1, p)) from None
+        out.append("%r,%r,%r" % (x, y, z))
+    return ";".join(out)
+
+
 def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
-                 edgeContinuity=None, detectCreases=None, modelAccuracy=None, weights=None):
+                 edgeContinuity=None, detectCreases=None, modelAccuracy=None, weights=None, points=None):
     """fillHole's keywords as the core's option dict (checked there, by the schema)."""
     o = dict(method=str(method), continuity=str(continuity), tolerance=float(tolerance),
              angularTolerance=float(angularTolerance), curvatureTolerance=float(curvatureTolerance),
@@ -85,6 +97,8 @@ def _fillOptions(method, continuity, tolerance, angularTolerance, curvatureToler
             o[name] = bool(value)
     if weights is not None:
         o["weights"] = str(weights)
+    if points:
+        o["points"] = pointList(points)
     return o
 
 __all__ = ["optionSchema", "optionTip", "FILL_OPTIONS", "findHoles", "fillHole", "fillHoles", "prepareHole", "PreparedHole", "FilledHole", "fillAdjacentHoles", "projectionSurface", "learnInfo", "continuityReport", "makeFill", "Hole", "HoleFillError", "METHODS",
@@ -206,10 +220,11 @@ class PreparedHole:
     def fill(self, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
              maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=True, edgeContinuity=None,
-             detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
+             detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"],
+             points=None):
         """As fillHole, on this hole: a FilledHole (face, sewn, report)."""
         options = _fillOptions(method, continuity, tolerance, angularTolerance, curvatureTolerance, maxControlPoints,
-                               edgeContinuity, detectCreases, modelAccuracy, weights)
+                               edgeContinuity, detectCreases, modelAccuracy, weights, points)
         # The last fill is kept: asked again with the same options (a Preview, then OK), it is
         # returned as it was, not solved again.
         key = (json.dumps(options, sort_keys=True), bool(sewn))
@@ -264,7 +279,8 @@ def prepareHole(shape, hole=1):
 def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], curvatureTolerance=_FILL["curvatureTolerance"],
              maxControlPoints=_FILL["maxControlPoints"], progress=None, sewn=True, edgeContinuity=None,
-             detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"]):
+             detectCreases=_FILL["detectCreases"], modelAccuracy=_FILL["modelAccuracy"], weights=_FILL["weights"],
+             points=None):
     """Fill one hole of `shape` with a trimmed B-spline face.
 
     hole: a Hole from findHoles, its 1-based number, or edge names/indices on its loop.
@@ -283,6 +299,9 @@ def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity
     stricter than the model is there, and the message names such edges; False: the tiers alone.
     weights: UVTran's weights file (.pt, from `holefill train uvtran`); "" for the shipped one.
     maxControlPoints: the most poles the solver's refinement may reach.
+    points: (x, y, z) points inside the hole (model units) the face passes through, as Surface
+    Filling's vertex constraints; report["point_distances"] gives each one's distance to the face,
+    and a point missed by more than the G0 tolerance makes the fill tolerance_not_met.
     The defaults are the core's (optionSchema("fill"), as `holefill options fill` lists them).
     Returns a FilledHole (face, sewn, report): the Part.Face, a copy of the model with the face sewn
     in (None with sewn=False, which saves the sewing), and the report.
@@ -290,7 +309,7 @@ def fillHole(shape, hole=1, method=_FILL["method"], continuity=_FILL["continuity
     report["status"] == "tolerance_not_met". A failed fill raises HoleFillError."""
     return PreparedHole(shape, hole).fill(method, continuity, tolerance, angularTolerance, curvatureTolerance,
                                           maxControlPoints, progress, sewn, edgeContinuity, detectCreases,
-                                          modelAccuracy, weights)
+                                          modelAccuracy, weights, points)
 
 
 def fillHoles(shape, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
@@ -354,11 +373,12 @@ def continuityReport(face, shape, hole=None):
 
 def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None,
-             weights=_FILL["weights"], prepared=None):
+             weights=_FILL["weights"], prepared=None, points=None):
     """Create a parametric Fill object on `source` (a document object with a Shape).
     edges: "EdgeK" names on the hole's loop (one edge is enough); None takes hole 1.
     edgeContinuity: per-edge requests as in fillHole, kept in the EdgeContinuity property;
     weights: UVTran's weights file as in fillHole, kept in the Weights property.
+    points: points the face passes through as in fillHole, kept in the Points property.
     prepared: a PreparedHole (prepareHole) of this source's shape and these edges, e.g. the one
     a Preview filled: the object's first recompute then neither reads the model nor finds the hole
     again, and solves nothing when its options are those of the prepared hole's last fill.
@@ -367,7 +387,7 @@ def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["conti
     HoleFillError is raised."""
     from HoleFill import fill_feature
     return fill_feature.makeFill(source, edges, method, continuity, tolerance, angularTolerance, output, doc,
-                                 edgeContinuity, weights, prepared)
+                                 edgeContinuity, weights, prepared, points)
 
 
 from HoleFill.inspection import continuityAlong, curvatureMap, faceContinuity, inspectionMesh, renderImage  # noqa: E402

@@ -86,7 +86,7 @@ def followHole(shape, edges, signature, placement=None):
 
 class FillFeature(ParametricFeature):
     viewProvider = "FillViewProvider"
-    computedFrom = ("Source", "Method", "Continuity", "Tolerance", "AngularTolerance", "EdgeContinuity", "Output", "Weights")
+    computedFrom = ("Source", "Method", "Continuity", "Tolerance", "AngularTolerance", "EdgeContinuity", "Output", "Weights", "Points")
 
     def setupProperties(self, obj):
         add = partial(ensureProperty, obj)
@@ -114,6 +114,8 @@ class FillFeature(ParametricFeature):
         if not obj.getEnumerationsOfProperty("Output"):
             obj.Output = list(OUTPUTS)
         add("App::PropertyFile", "Weights", "Fill", tip["weights"])
+        add("App::PropertyVectorList", "Points", "Fill", "Points inside the hole the face passes through (global coordinates, "
+            "as Surface Filling's vertex constraints); each one's distance to the face is in the Report")
         for name, doc in (("Status", "ok, tolerance_not_met or the failure"), ("Achieved", "continuity reached"),
                           ("Report", "full continuity report (JSON)")):
             add("App::PropertyString", name, "Report", doc)
@@ -141,7 +143,7 @@ class FillFeature(ParametricFeature):
                                                    tolerance=float(obj.Tolerance), angularTolerance=obj.AngularTolerance,
                                                    sewn=obj.Output == "Sewn",
                                                    edgeContinuity=edgeContinuityDict(obj.EdgeContinuity),
-                                                   weights=obj.Weights)
+                                                   weights=obj.Weights, points=list(getattr(obj, "Points", [])))
         obj.Shape = res[1] if obj.Output == "Sewn" else res[0]
         report = res[-1]
         obj.Status = report["status"]
@@ -180,7 +182,7 @@ _FILL = HoleFill.FILL_DEFAULTS
 
 def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
              angularTolerance=_FILL["angularTolerance"], output="Face", doc=None, edgeContinuity=None, weights=_FILL["weights"],
-             prepared=None):
+             prepared=None, points=None):
     if source is None or not hasattr(source, "Shape"):
         raise HoleFill.HoleFillError("makeFill needs a document object with a shape as source")
     doc = doc or source.Document
@@ -194,7 +196,7 @@ def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["conti
 
     def setup(obj):
         FillFeature(obj)
-        _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared)
+        _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared, points)
 
     from HoleFill.transaction import addParametric
     return addParametric(doc, "Fill hole", "Fill", setup, "the fill")
@@ -202,15 +204,16 @@ def makeFill(source, edges=None, method=_FILL["method"], continuity=_FILL["conti
 
 def changeFill(obj, source, edges, method=_FILL["method"], continuity=_FILL["continuity"], tolerance=_FILL["tolerance"],
                angularTolerance=_FILL["angularTolerance"], output="Face", edgeContinuity=None, weights=_FILL["weights"],
-               prepared=None):
+               prepared=None, points=None):
     """Sets an existing Fill's hole and options in one undo step and recomputes it; on failure
     the Fill is left as it was and HoleFillError is raised."""
     from HoleFill.transaction import changeParametric
     return changeParametric(obj, "Edit fill", lambda o: _setFill(o, source, edges, method, continuity, tolerance, angularTolerance,
-                                                                 output, edgeContinuity, weights, prepared), "the fill")
+                                                                 output, edgeContinuity, weights, prepared, points), "the fill")
 
 
-def _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared):
+def _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance, output, edgeContinuity, weights, prepared,
+             points=None):
     if prepared is not None:
         asked = {int(e[4:]) if isinstance(e, str) else int(e) for e in edges}
         kept = set(prepared.edges)
@@ -225,5 +228,6 @@ def _setFill(obj, source, edges, method, continuity, tolerance, angularTolerance
     obj.Output = output
     obj.Weights = weights
     obj.EdgeContinuity = HoleFill.edgeContinuityEntries(edgeContinuity)
+    obj.Points = [FreeCAD.Vector(*p[:3]) if not isinstance(p, FreeCAD.Vector) else p for p in (points or [])]
     if prepared is not None:  # a hole read and found for these edges already (the task panel's)
         obj.Proxy.keepPrepared(source.Shape, list(edges), prepared)

@@ -404,3 +404,34 @@ TEST(HoleFill, FillHolesClosesEveryHoleInTurn) {
   EXPECT_EQ(still.Extent(), before.Extent());
   EXPECT_THROW(fillHoles(samples::byName("closed_box")), Error);
 }
+
+TEST(HoleFill, PassesThroughPointsInsideTheHole) {
+  // The open top of a 30 x 20 x 10 box (z = 10) filled through a point 2 above its middle and one
+  // 1 below another: the face reaches both within the G0 tolerance and bends to do so.
+  HoleFillOptions o;
+  o.continuity = Continuity::G0;
+  o.points = {Eigen::Vector3d(15, 10, 12), Eigen::Vector3d(7, 6, 9)};
+  const HoleFillResult r = fillHole(samples::boxMinusFace(), 0, o);
+  ASSERT_EQ(r.status, FillStatus::Ok) << r.message;
+  ASSERT_EQ(r.pointDistances.size(), 2u);
+  for (double d : r.pointDistances) EXPECT_LE(d, r.g0Tolerance);
+  EXPECT_TRUE(r.faceValid && r.shapeValid);
+  EXPECT_NE(toJson(r).find("\"point_distances\""), std::string::npos);
+  // Without them the face is the flat top.
+  HoleFillOptions flat = o;
+  flat.points.clear();
+  const HoleFillResult f = fillHole(samples::boxMinusFace(), 0, flat);
+  ASSERT_EQ(f.status, FillStatus::Ok) << f.message;
+  GeomAPI_ProjectPointOnSurf onFlat(gp_Pnt(15, 10, 12), BRep_Tool::Surface(f.face));
+  EXPECT_NEAR(onFlat.LowerDistance(), 2.0, 1e-4);
+}
+
+TEST(HoleFill, APointNotOverTheHoleIsRefusedClearly) {
+  HoleFillOptions o;
+  o.continuity = Continuity::G0;
+  o.method = ParamMethod::NearestPlane;
+  o.points = {Eigen::Vector3d(45, 10, 10)};  // beside the box, not over its opening
+  const HoleFillResult r = fillHole(samples::boxMinusFace(), 0, o);
+  EXPECT_EQ(r.status, FillStatus::Failed);
+  EXPECT_NE(r.message.find("not over the hole"), std::string::npos) << r.message;
+}

@@ -50,6 +50,23 @@ TEST(VariationalFill, PlanarBoundaryGivesAPlane) {
   EXPECT_LT(r.surface.poles.col(2).cwiseAbs().maxCoeff(), 1e-9);
 }
 
+TEST(VariationalFill, PassesThroughInteriorPoints) {
+  // A flat G1 boundary with two points above and below it: the surface goes through both to the
+  // G0 tolerance (a plane would miss them by 0.1), and still meets the boundary.
+  FillConstraints c = ellipse(Field{0, 0, 0, 0, 0}, 2.0, 1.0, 120, false);
+  c.passUV = {Eigen::Vector2d(1.0, 0.5), Eigen::Vector2d(0.6, 0.4)};
+  c.passXYZ = {Eigen::Vector3d(1.0, 0.5, 0.1), Eigen::Vector3d(0.6, 0.4, -0.05)};
+  const VariationalFillResult r = solveVariationalFill(c, 0, 2, 0, 1, {}, {});
+  EXPECT_TRUE(r.toleranceMet);
+  EXPECT_LE(r.passError, 1e-6);
+  for (size_t p = 0; p < c.passUV.size(); ++p)
+    EXPECT_LT((r.surface.point(c.passUV[p].x(), c.passUV[p].y()) - c.passXYZ[p]).norm(), 1e-6) << p;
+  EXPECT_LE(r.g0, 1e-6);
+  EXPECT_LE(r.g1, 1e-3);
+  c.passXYZ.pop_back();
+  EXPECT_THROW(solveVariationalFill(c, 0, 2, 0, 1, {}, {}), Error);
+}
+
 TEST(VariationalFill, MeetsG0AndG1OnACurvedBoundary) {
   const Field f{0.2, -0.1, 0.3, -0.2, 0.15};
   const FillConstraints c = ellipse(f, 1.0, 1.0, 200, false);

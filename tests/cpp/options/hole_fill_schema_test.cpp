@@ -14,6 +14,7 @@ TEST(HoleFillSchema, EachOptionReachesTheFieldTheFillReads) {
   const OptionValues values = {
       {"method", "mvc"},        {"continuity", "G2"},        {"tolerance", "0.002"},          {"angularTolerance", "0.01"},
       {"curvatureTolerance", "0.2"}, {"maxControlPoints", "600"}, {"edgeContinuity", "Edge5=G0,Edge7=G1"},
+      {"points", "1,2,3;-0.5,0,0.001"},
       {"detectCreases", "false"}, {"modelAccuracy", "false"}, {"weights", "/tmp/u.pt"}, {"computeVolume", "true"},
       {"checkModel", "true"}};
   setEveryOption(s, o, values);
@@ -29,9 +30,15 @@ TEST(HoleFillSchema, EachOptionReachesTheFieldTheFillReads) {
   EXPECT_EQ(o.parameterization.uvtranWeights, "/tmp/u.pt");
   EXPECT_TRUE(o.computeVolume);
   EXPECT_TRUE(o.checkModel);
+  ASSERT_EQ(o.points.size(), 2u);
+  EXPECT_EQ(o.points[1], Eigen::Vector3d(-0.5, 0, 1e-3));
   expectEveryOptionReadsBack(s, o, values);
   setOption(s, o, "edgeContinuity", "");
   EXPECT_TRUE(o.edgeContinuity.empty());
+  setOption(s, o, "points", "");
+  setOption(s, o, "points", " 1, 2 ,3 ; ");
+  EXPECT_EQ(o.points, (std::vector<Eigen::Vector3d>{Eigen::Vector3d(1, 2, 3)}));
+  for (const char* bad : {"1,2", "1,2,3,4", "1,x,3", "1,2,nan"}) EXPECT_THROW(setOption(s, o, "points", bad), Error) << bad;
 }
 
 TEST(HoleFillSchema, DefaultsAreTheStructsAndNamesAndFlagsAreUnique) {
