@@ -1,5 +1,7 @@
 #include "mesh/fill_metrics.h"
 
+#include "mesh/self_intersection.h"
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -114,9 +116,11 @@ FillMetrics measureFill(const TriangleMesh& input, const TriangleMesh& output, c
     }
   double sum = 0;
   m.minQuality = 1;
+  std::vector<bool> added(output.triangles.rows(), false);
   for (Eigen::Index t = 0; t < output.triangles.rows(); ++t) {
     auto it = inputTriangles.find(triangleKey(output.vertices, output.triangles.row(t)));
     if (it != inputTriangles.end()) { inputTriangles.erase(it); continue; }
+    added[t] = true;
     const Eigen::Vector3d a = output.vertices.row(output.triangles(t, 0)).transpose();
     const Eigen::Vector3d b = output.vertices.row(output.triangles(t, 1)).transpose();
     const Eigen::Vector3d c = output.vertices.row(output.triangles(t, 2)).transpose();
@@ -129,6 +133,7 @@ FillMetrics measureFill(const TriangleMesh& input, const TriangleMesh& output, c
     samples.push_back((a + b + c) / 3);
   }
   m.keptInput = inputTriangles.empty();
+  if (m.newTriangles > 0) m.selfIntersections = static_cast<int>(selfIntersections(output, added).pairs.size());
   if (m.newTriangles > 0) {
     m.meanQuality = sum / m.newTriangles;
     m.goodShare /= m.newTriangles;
@@ -161,7 +166,7 @@ std::string toJson(const FillMetrics& m) {
   w.field("new_vertices", m.newVertices).field("new_triangles", m.newTriangles);
   w.field("boundary_edges_before", m.boundaryEdgesBefore).field("boundary_edges_after", m.boundaryEdgesAfter);
   w.field("non_manifold_edges_added", m.nonManifoldEdgesAdded).field("misoriented_edges_added", m.misorientedEdgesAdded);
-  w.field("degenerate_triangles", m.degenerateTriangles);
+  w.field("degenerate_triangles", m.degenerateTriangles).field("self_intersections", m.selfIntersections);
   w.field("min_quality", m.minQuality).field("mean_quality", m.meanQuality).field("share_quality_0_7", m.goodShare);
   w.field("rms_distance", m.rmsDistance).field("max_distance", m.maxDistance).field("kept_input", m.keptInput);
   w.endObject();

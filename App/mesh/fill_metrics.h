@@ -2,7 +2,8 @@
 // given the input mesh and any filler's output, find what was added by position (fillers may
 // reorder or weld vertices, so indices cannot be trusted; FreeCAD rounds them to float, so
 // positions are matched at float precision), then report the metrics of
-// DESIGN.md: holes left, manifoldness and orientation of the result, Field's quality of the
+// DESIGN.md: holes left, manifoldness and orientation of the result, new triangles crossing each other
+// or the surface (exactly, self_intersection.h), Field's quality of the
 // new triangles, and the distance of the new surface to a ground truth (the triangles a
 // benchmark cut away), normalized by the input's bounding-box diagonal. The new surface is
 // sampled at its new vertices and at the centroids of its new triangles, so a filler that
@@ -21,6 +22,7 @@ struct FillMetrics {
   int nonManifoldEdgesAdded = 0;         // edges of 3+ triangles in the output, beyond the input's
   int misorientedEdgesAdded = 0;         // edges run twice in one direction, beyond the input's
   int degenerateTriangles = 0;           // new triangles of zero area
+  int selfIntersections = 0;             // pairs of triangles crossing, at least one new (self_intersection.h)
   double minQuality = 0, meanQuality = 0, goodShare = 0;  // over new triangles; goodShare: q ≥ 0.7
   double rmsDistance = -1, maxDistance = -1;             // to the ground truth / diagonal; −1 without one
   bool keptInput = true;                 // every input triangle is still there (by position)
