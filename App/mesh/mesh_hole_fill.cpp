@@ -259,9 +259,11 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
   }
   result.closed = atCopies ? countBoundaryEdges(result.mesh) == 0 : closedEdges == static_cast<size_t>(detection.boundaryEdges);
   if (!result.closed) {
-    // Only vertices on the input's boundary can have been left with a coincident partner.
+    // Only vertices on the input's boundary can have been left with a coincident partner: the
+    // holes' and the seams' (which are on no hole).
     std::vector<int> candidates;
     for (const MeshHole& h : detection.holes) candidates.insert(candidates.end(), h.loop.begin(), h.loop.end());
+    if (detection.seamEdges > 0) candidates.clear();  // every vertex, then
     result.closedWhenWelded =
         countBoundaryEdges(result.mesh, weldMap(result.mesh.vertices, 1e-9 * boundingDiagonal(mesh.vertices), candidates)) == 0;
   } else {

@@ -116,11 +116,41 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
   }
   const std::vector<int> site = weldMap(mesh.vertices, coincidence * boundingDiagonal(mesh.vertices), boundaryVertices);
 
+  // A seam: two boundary halfedges between the same two positions, running opposite ways (the
+  // two sides of an exporter's seam of duplicated vertices, or a zero-width crack). The surface is
+  // closed there geometrically, and filling either side capped the whole mesh across (the
+  // corpus's seam class: fills 0.19 of the diagonal off, crossing the surface). Such pairs are
+  // taken out of the boundary; a hole that runs into the seam continues from a copy of the vertex
+  // it reached (below), so that it is traced as the one hole it is.
+  {
+    std::unordered_map<std::uint64_t, std::vector<int>> bySites;
+    const auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+    for (size_t h = 0; h < halfedges.size(); ++h) bySites[key(site[halfedges[h].from], site[halfedges[h].to])].push_back(static_cast<int>(h));
+    for (size_t h = 0; h < halfedges.size(); ++h) {
+      if (halfedges[h].used || site[halfedges[h].from] == site[halfedges[h].to]) continue;
+      auto it = bySites.find(key(site[halfedges[h].to], site[halfedges[h].from]));
+      if (it == bySites.end()) continue;
+      for (int g : it->second)
+        if (!halfedges[g].used) {
+          halfedges[h].used = halfedges[g].used = true;
+          report.seamEdges += 2;
+          break;
+        }
+    }
+  }
+  // The halfedges left, by the site of their start: where a traced hole reaches a vertex whose own
+  // boundary went on along a seam, it goes on from a coincident copy.
+  std::unordered_map<int, std::vector<int>> outgoingAtSite;
+  for (size_t h = 0; h < halfedges.size(); ++h)
+    if (!halfedges[h].used) outgoingAtSite[site[halfedges[h].from]].push_back(static_cast<int>(h));
+  for (auto& out : outgoing)
+    out.erase(std::remove_if(out.begin(), out.end(), [&](int h) { return halfedges[h].used; }), out.end());
+
   for (size_t h0 = 0; h0 < halfedges.size(); ++h0) {
     if (halfedges[h0].used) continue;
     std::vector<int> loop;
     std::string problem;
-    bool singular = false;
+    bool singular = false, acrossSeam = false;
     int h = static_cast<int>(h0);
     for (size_t guard = 0;; ++guard) {
       if (guard > halfedges.size()) { problem = "the boundary does not close"; break; }
@@ -131,8 +161,14 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
       if (outgoing[v].size() == 1) {
         next = outgoing[v][0];
       } else if (outgoing[v].empty()) {
-        problem = "the boundary stops at vertex " + std::to_string(v);
-        break;
+        // Its boundary went on along a seam: on from a copy of v, the first free one.
+        for (int g : outgoingAtSite[site[v]])
+          if (!halfedges[g].used || g == static_cast<int>(h0)) { next = g; break; }
+        if (next < 0) {
+          problem = "the boundary stops at vertex " + std::to_string(v);
+          break;
+        }
+        acrossSeam = true;
       } else {
         singular = true;
         next = nextOnFan(topo, halfedges[h].triangle, v, outgoing, halfedges);
@@ -178,11 +214,16 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
         if (pieces.size() > 1 && atCopies) hole.message = "split where the loop passes two coincident (duplicated) vertices";
         else if (pieces.size() > 1) hole.message = "split at a singular vertex shared with another loop";
         else if (singular) hole.message = "passes a singular vertex";
+        if (acrossSeam) hole.message += std::string(hole.message.empty() ? "" : "; ") + "runs across a seam of duplicated vertices";
         if (!anticlockwise) hole.message += std::string(hole.message.empty() ? "" : "; ") + "its triangles are oriented against their component";
       }
       report.holes.push_back(std::move(hole));
     }
   }
+  if (report.seamEdges > 0)
+    report.warnings.push_back(std::to_string(report.seamEdges) + " boundary edges lie along seams (pairs running opposite ways between "
+                              "duplicated vertices): closed geometrically, they are no holes and are left as they are; weld the "
+                              "copies (--weld) for an index-closed mesh");
   if (report.duplicateSplits > 0)
     report.warnings.push_back(std::to_string(report.duplicateSplits) +
                               " loop(s) pass duplicated vertices (coincident copies, as along export seams); they are filled "
@@ -205,7 +246,8 @@ std::string toJson(const MeshHoleReport& d) {
   w.endArray();
   w.field("boundary_edges", d.boundaryEdges).field("non_manifold_edges", d.nonManifoldEdges);
   w.field("inconsistent_edges", d.inconsistentEdges).field("singular_vertices", d.singularVertices);
-  w.field("components", d.components).field("duplicate_vertex_splits", d.duplicateSplits).field("warnings", d.warnings);
+  w.field("components", d.components).field("duplicate_vertex_splits", d.duplicateSplits).field("seam_edges", d.seamEdges);
+  w.field("warnings", d.warnings);
   w.endObject();
   return w.str();
 }

@@ -8,10 +8,12 @@
 // split there into simple loops; triangles that are oriented against their neighbours are
 // read through a consistent re-orientation of their component; loops touching a non-manifold
 // edge, or in a component that cannot be oriented, are reported and left unfilled. Scans
-// and exports often duplicate vertices along seams: a loop that passes the same position
-// twice through two copies of a vertex is split there too, so the filled surface is closed
-// geometrically (its index-level closure then needs the copies welded, which only the user
-// may decide, since the input's triangles stay untouched). Nothing
+// and exports often duplicate vertices along seams: two boundary edges between the same two
+// positions running opposite ways are the two sides of a seam, closed geometrically, and are no
+// hole; a hole that runs into a seam continues from the copy of the vertex where it meets it;
+// and a loop that passes the same position twice through two copies of a vertex is split there,
+// so the filled surface is closed geometrically (its index-level closure then needs the copies
+// welded, which only the user may decide, since the input's triangles stay untouched). Nothing
 // here throws for a merely broken mesh: every hole gets a status and a message.
 #pragma once
 
@@ -43,6 +45,7 @@ struct MeshHoleReport {
   int components = 0;                    // edge-connected components of triangles
   int unusedVertices = 0;                // vertices of no triangle
   int duplicateSplits = 0;               // loops split where they pass two coincident vertices
+  int seamEdges = 0;                     // boundary edges paired along seams (not holes; see findMeshHoles)
   std::vector<std::string> warnings;
 };
 

@@ -45,11 +45,21 @@ SelfIntersections selfIntersections(const TriangleMesh& mesh, const std::vector<
   if (!others.empty())
     CGAL::box_intersection_d(subjects.begin(), subjects.end(), others.begin(), others.end(),
                              [&](const Box&, const Box& o) { local[o.info()] = true; });
-  // The local mesh, on the mesh's own vertex indices (shared edges and vertices stay shared).
+  // The local mesh, on the mesh's own vertex indices (shared edges and vertices stay shared), and
+  // vertices at exactly one position taken as one: a seam's copies, or a fill's vertex against its
+  // copy across a seam, touch there and do not cross.
+  std::vector<int> localVertices;
+  for (int t = 0; t < nt; ++t)
+    if (local[t])
+      for (int k = 0; k < 3; ++k) localVertices.push_back(mesh.triangles(t, k));
+  std::sort(localVertices.begin(), localVertices.end());
+  localVertices.erase(std::unique(localVertices.begin(), localVertices.end()), localVertices.end());
+  const std::vector<int> site = weldMap(mesh.vertices, 0.0, localVertices);
   Mesh sm;
   std::unordered_map<int, Mesh::Vertex_index> vertexOf;
   std::vector<int> triangleOf;  // face index of sm -> triangle of mesh
   const auto vertex = [&](int v) {
+    v = site[v];
     auto it = vertexOf.find(v);
     if (it != vertexOf.end()) return it->second;
     const Mesh::Vertex_index h = sm.add_vertex(K::Point_3(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2)));
@@ -62,7 +72,8 @@ SelfIntersections selfIntersections(const TriangleMesh& mesh, const std::vector<
   for (int t = 0; t < nt; ++t)
     if (local[t] && !isSubject(t)) order.push_back(t);
   for (int t : order) {
-    const Mesh::Face_index f = sm.add_face(vertex(mesh.triangles(t, 0)), vertex(mesh.triangles(t, 1)), vertex(mesh.triangles(t, 2)));
+    const Mesh::Vertex_index a = vertex(mesh.triangles(t, 0)), b = vertex(mesh.triangles(t, 1)), c = vertex(mesh.triangles(t, 2));
+    const Mesh::Face_index f = a == b || b == c || a == c ? Mesh::null_face() : sm.add_face(a, b, c);
     if (f == Mesh::null_face()) {
       ++r.skippedTriangles;
       continue;

@@ -3,8 +3,8 @@
 // CGAL's Polygon Mesh Processing (self_intersections: exact predicates, so touching and crossing
 // are told apart without a tolerance) on the part of the mesh that can meet the subject
 // triangles: they and every other triangle whose bounding box overlaps one of theirs, connected
-// by the mesh's own indices, so that triangles sharing an edge or a vertex count only where they
-// meet beyond it. Triangles that cannot join that local mesh as a manifold surface (a third
+// by the mesh's own indices (vertices at exactly one position taken as one: a seam's copies), so
+// that triangles sharing an edge or a vertex count only where they meet beyond it. Triangles that cannot join that local mesh as a manifold surface (a third
 // triangle on an edge, a repeated triangle) are left out and counted.
 #pragma once
 

@@ -84,7 +84,12 @@ TEST(VertexWeld, TheMeshFillClosesTheSeamWhenAsked) {
   const MeshFillResult welded = fillMeshHoles(m, o);
   EXPECT_EQ(welded.weldedVertices, 4);
   EXPECT_EQ(welded.detection.holes.size(), 1u);  // the rim: the seam is no hole
-  EXPECT_GT(asIs.detection.holes.size(), welded.detection.holes.size());
+  // As it is, the seam is read as one too (its two sides paired), but the result stays open by
+  // index along it: closed only once welded.
+  EXPECT_EQ(asIs.detection.holes.size(), 1u);
+  EXPECT_EQ(asIs.detection.seamEdges, 6);
+  EXPECT_FALSE(asIs.closed);
+  EXPECT_TRUE(asIs.closedWhenWelded);
   EXPECT_TRUE(welded.closed);
   EXPECT_EQ(countBoundaryEdges(welded.mesh), 0);
   // The welded input comes first, bit for bit.

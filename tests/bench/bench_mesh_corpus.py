@@ -1,0 +1,110 @@
+"""Benchmark: mesh hole filling on the mesh-hole corpus (tests/corpus/mesh_holes.py, issue 26):
+ours (defaults), CGAL PMP triangulate_refine_and_fair_hole and FreeCAD Mesh fillupHoles, side by
+side in one run on every case (meshfill_runners.py; BENCH_REPEATS runs each, default 1 here).
+
+Per case and filler (one measure, HoleFillApp.measureMeshFill): boundary edges left, edges of
+three triangles or run twice one way added, new triangles crossing each other or the surface
+(exactly: mesh/self_intersection.h), Field's quality q of the new triangles, distance of the new
+surface to the cut-away truth (RMS and max over the diagonal), and time (fill alone; whole
+process from index arrays). valid: nothing non-manifold, misoriented, degenerate or crossing
+added, the input kept; closed: no boundary edge left.
+
+  BENCH_MESH_CORPUS=DIR (corpus-out/mesh)  BENCH_MESH_ONLY=class,class (all)
+Run inside freecadcmd (scripts/bench.sh, BENCH_ONLY=mesh-corpus); writes $BENCH_OUT/bench_mesh_corpus.json
+and .md, and per case the failures to stderr."""
+import json
+import os
+import statistics
+import sys
+
+os.environ.setdefault("BENCH_REPEATS", "1")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
+from meshfill_runners import measure, run_cgal, run_freecad, run_ours  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+import HoleFillApp  # noqa: E402
+
+OUT = os.environ.get("BENCH_OUT", "/tmp")
+CORPUS = os.environ.get("BENCH_MESH_CORPUS", "corpus-out/mesh")
+ONLY = [c for c in os.environ.get("BENCH_MESH_ONLY", "").split(",") if c]
+FILLERS = (("HoleFill", run_ours), ("CGAL", None), ("FreeCAD", run_freecad))
+
+
+def load(case):
+    folder = os.path.join(CORPUS, case["id"])
+    v, t = HoleFillApp.readMesh(os.path.join(folder, "input.off"))
+    if case["truth_triangles"]:
+        gv, gt = HoleFillApp.readMesh(os.path.join(folder, "truth.off"))
+    else:
+        gv, gt = np.zeros((0, 3)), np.zeros((0, 3), np.int32)
+    return dict(v=v, t=t, gv=gv, gt=gt)
+
+
+def main():
+    index = [c for c in json.load(open(os.path.join(CORPUS, "index.json")))["cases"] if not ONLY or c["cls"] in ONLY]
+    work = os.path.join(OUT, "mesh_corpus")
+    os.makedirs(work, exist_ok=True)
+    rows = []
+    for k, case in enumerate(index):
+        c = load(case)
+        for name, runner in FILLERS:
+            r = run_cgal(c, work) if name == "CGAL" else runner(c)
+            if r is None:
+                continue
+            ov, ot, dt, note = r
+            row = dict(id=case["id"], cls=case["cls"], filler=name, note=note, seconds=dt[0], total=dt[1])
+            if ov is None:
+                row.update(valid=False, closed=False, failed=True)
+            else:
+                m = measure(c, ov, ot)
+                row.update(m, failed=False, closed=m["boundary_edges_after"] == 0,
+                           valid=(m["non_manifold_edges_added"] == 0 and m["misoriented_edges_added"] == 0 and
+                                  m["degenerate_triangles"] == 0 and m["self_intersections"] == 0 and m["kept_input"]))
+            if not row["valid"] or not row["closed"]:
+                print("%s %s: %s" % (case["id"], name, ", ".join(
+                    "%s %s" % (key, row.get(key)) for key in ("failed", "boundary_edges_after", "non_manifold_edges_added",
+                                                              "misoriented_edges_added", "degenerate_triangles",
+                                                              "self_intersections", "kept_input", "note") if key in row)),
+                      file=sys.stderr)
+            rows.append(row)
+        print("%3d/%d %s" % (k + 1, len(index), case["id"]), file=sys.stderr)
+        sys.stderr.flush()
+    json.dump(rows, open(os.path.join(OUT, "bench_mesh_corpus.json"), "w"), indent=1)
+    text = table(rows)
+    open(os.path.join(OUT, "bench_mesh_corpus.md"), "w").write(text + "\n")
+    print(text)
+
+
+def table(rows):
+    med = lambda xs: statistics.median(xs) if xs else float("nan")
+    lines = ["| class | filler | cases | valid | closed | crossing (cases) | q mean (median) | q min (worst) | RMS/diag (median) "
+             "| fill s (median) | total s (median) |", "|" + "---|" * 11]
+    classes = sorted({r["cls"] for r in rows}) + ["all"]
+    for cls in classes:
+        for filler, _ in FILLERS:
+            rs = [r for r in rows if r["filler"] == filler and (cls == "all" or r["cls"] == cls)]
+            if not rs:
+                continue
+            ok = [r for r in rs if not r["failed"] and r.get("new_triangles", 0) > 0]
+            rms = [r["rms_distance"] for r in ok if r.get("rms_distance", -1) >= 0]
+            lines.append("| %s | %s | %d | %d | %d | %d | %s | %s | %s | %s | %s |" % (
+                cls, filler, len(rs), sum(r["valid"] for r in rs), sum(r["closed"] for r in rs),
+                sum(1 for r in rs if r.get("self_intersections", 0) > 0),
+                "%.3f" % med([r["mean_quality"] for r in ok]) if ok else "-",
+                "%.3f" % min(r["min_quality"] for r in ok) if ok else "-",
+                "%.2e" % med(rms) if rms else "-",
+                "%.4f" % med([r["seconds"] for r in rs if r["seconds"] == r["seconds"]]),
+                "%.4f" % med([r["total"] for r in rs if r["total"] == r["total"]])))
+    return "\n".join(lines)
+
+
+try:
+    main()
+except Exception:
+    import traceback
+    traceback.print_exc()
+finally:
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(0)
