@@ -4,12 +4,15 @@
 #include <set>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "geometry/error.h"
 #include "geometry/json_writer.h"
 #include "mesh/mesh_topology.h"
+#include "mesh/self_intersection.h"
 
 namespace holefill {
 
@@ -82,6 +85,69 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
   std::unordered_set<std::uint64_t> addedEdges;
   auto joined = [&](int u, int v) { return topo.hasEdge(u, v) || addedEdges.count(MeshTopology::key(u, v)) > 0; };
 
+  // The pairs of triangles of a patch (its boundary on the loop's vertices, its new points after)
+  // that cross each other, the surface around it, or an earlier hole's new triangles: those of
+  // them whose boxes overlap the patch's, on their own indices (self_intersection.h).
+  std::vector<Eigen::AlignedBox3d> boxes;
+  if (options.checkCrossings) {
+    boxes.reserve(mesh.triangles.rows());
+    for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t) {
+      Eigen::AlignedBox3d b;
+      for (int k = 0; k < 3; ++k) b.extend(point(mesh.triangles(t, k)));
+      boxes.push_back(b);
+    }
+  }
+  auto patchCrossings = [&](const HolePatch& p, const std::vector<int>& loop) {
+    const int n = p.boundaryCount;
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& x : p.points) box.extend(x);
+    std::unordered_map<long long, int> localOf;  // ≥ 0: a mesh vertex (input or new); < 0: a patch point −1−i
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<Eigen::Vector3i> tris;
+    std::vector<bool> subject;
+    const auto vertexOf = [&](long long key, const Eigen::Vector3d& x) {
+      auto it = localOf.find(key);
+      if (it != localOf.end()) return it->second;
+      pts.push_back(x);
+      return localOf.emplace(key, static_cast<int>(pts.size()) - 1).first->second;
+    };
+    const auto global = [&](int g) { return g < nv ? point(g) : newPoints[g - nv]; };
+    for (const auto& t : p.triangles) {
+      Eigen::Vector3i f;
+      for (int k = 0; k < 3; ++k) f[k] = t[k] < n ? vertexOf(loop[t[k]], p.points[t[k]]) : vertexOf(-1 - t[k], p.points[t[k]]);
+      tris.push_back(f);
+      subject.push_back(true);
+    }
+    for (Eigen::Index t = 0; t < mesh.triangles.rows(); ++t)
+      if (boxes[t].intersects(box)) {
+        Eigen::Vector3i f;
+        for (int k = 0; k < 3; ++k) f[k] = vertexOf(mesh.triangles(t, k), point(mesh.triangles(t, k)));
+        tris.push_back(f);
+        subject.push_back(false);
+      }
+    for (const Eigen::Vector3i& t : newTriangles) {
+      Eigen::AlignedBox3d b;
+      for (int k = 0; k < 3; ++k) b.extend(global(t[k]));
+      if (!b.intersects(box)) continue;
+      Eigen::Vector3i f;
+      for (int k = 0; k < 3; ++k) f[k] = vertexOf(t[k], global(t[k]));
+      tris.push_back(f);
+      subject.push_back(false);
+    }
+    TriangleMesh local;
+    local.vertices.resize(static_cast<Eigen::Index>(pts.size()), 3);
+    for (size_t i = 0; i < pts.size(); ++i) local.vertices.row(static_cast<Eigen::Index>(i)) = pts[i].transpose();
+    local.triangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
+    for (size_t i = 0; i < tris.size(); ++i) local.triangles.row(static_cast<Eigen::Index>(i)) = tris[i].transpose();
+    const SelfIntersections si = selfIntersections(local, subject, 1000);
+    if (std::getenv("HOLEFILL_DEBUG"))
+      for (const auto& [a, b] : si.pairs)
+        std::fprintf(stderr, "[mesh fill] crossing: %d (%s: %d %d %d) x %d (%s: %d %d %d) of %zu patch triangles\n", a,
+                     subject[a] ? "patch" : "mesh", tris[a][0], tris[a][1], tris[a][2], b, subject[b] ? "patch" : "mesh", tris[b][0],
+                     tris[b][1], tris[b][2], p.triangles.size());
+    return static_cast<int>(si.pairs.size());
+  };
+
   const int holeCount = static_cast<int>(detection.holes.size());
   for (int h = 0; h < holeCount; ++h) {
     const MeshHole& hole = detection.holes[h];
@@ -105,16 +171,95 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
       try {
         const std::vector<int>& loop = hole.loop;
         const int n = static_cast<int>(loop.size());
-        HolePatch patch;
-        patch.boundaryCount = n;
-        std::vector<Eigen::Vector3d> sums(n), across(n);
-        for (int i = 0; i < n; ++i) {
-          patch.points.push_back(point(loop[i]));
-          sums[i] = normalSum[loop[i]];
-          patch.scale.push_back(edgeCount[loop[i]] ? edgeSum[loop[i]] / edgeCount[loop[i]] : 0.0);
-          across[i] = orientedNormal(hole.edgeTriangles[i]).normalized();
-        }
-        patch.outsideEdge = [&](int i, int j) { return joined(loop[i], loop[j]); };
+        // One patch for the hole under options `o`; dihedral: the triangulation to start from.
+        auto makePatch = [&](const MeshFillOptions& o, bool dihedral, MeshHoleFill& f) {
+          HolePatch patch;
+          patch.boundaryCount = n;
+          std::vector<Eigen::Vector3d> sums(n), across(n);
+          for (int i = 0; i < n; ++i) {
+            patch.points.push_back(point(loop[i]));
+            sums[i] = normalSum[loop[i]];
+            patch.scale.push_back(edgeCount[loop[i]] ? edgeSum[loop[i]] / edgeCount[loop[i]] : 0.0);
+            across[i] = orientedNormal(hole.edgeTriangles[i]).normalized();
+          }
+          patch.outsideEdge = [&](int i, int j) { return joined(loop[i], loop[j]); };
+          f.splits = f.swaps = 0;
+          f.sigma = 0;
+          if (dihedral && n <= o.maxDihedralLoop) {
+            patch.triangles = triangulateMinDihedral(patch.points, across, patch.outsideEdge);
+            f.triangulation = "dihedral";
+          } else {
+            f.triangulation = "angle";
+            const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, o.triangulation);
+            patch.triangles = tri.triangles;
+            f.sigma = tri.sigma;
+          }
+          HolePatch bare;  // the relaxed initial triangulation, for the planar-hole fallback below
+          if (o.keepBetterBare || !o.refine) {
+            bare = patch;
+            PatchEdges edges(bare);
+            relaxAllEdges(bare, edges, o.refinement);
+          }
+          if (!o.refine) return bare;
+          const RefinementResult ref = refinePatch(patch, o.refinement);
+          f.splits = ref.splits;
+          f.swaps = ref.swaps;
+          if (ref.capped && f.message.find("safety cap") == std::string::npos)
+            f.message += std::string(f.message.empty() ? "" : "; ") + "refinement stopped at a safety cap";
+          const QualityResult improved = improvePatchQuality(patch, o.quality, o.refinement);
+          f.swaps += improved.swaps;
+          f.splits += improved.splits;
+          SurroundingRing ring;
+          {
+            std::unordered_map<int, int> local;  // mesh vertex → patch/ring index
+            for (int i = 0; i < n; ++i) local[loop[i]] = i;
+            std::unordered_set<int> seen;
+            for (int i = 0; i < n; ++i)
+              for (int t : incident[loop[i]]) {
+                if (!seen.insert(t).second) continue;
+                std::array<int, 3> tri;
+                int c = mesh.triangles(t, 0);
+                for (int k = 0; k < 3; ++k, c = topo.nextVertex(t, c)) {
+                  auto it = local.find(c);
+                  if (it == local.end()) {
+                    it = local.emplace(c, n + static_cast<int>(ring.points.size())).first;
+                    ring.points.push_back(point(c));
+                  }
+                  tri[k] = it->second;
+                }
+                ring.triangles.push_back(tri);
+              }
+          }
+          for (int pass = 0; pass < std::max(1, o.shape.passes); ++pass) {
+            if (pass > 0) {
+              PatchEdges edges(patch);
+              f.swaps += relaxAllEdges(patch, edges, o.refinement);
+            }
+            fairLaplacian(patch, ring, o.shape);
+          }
+          bilateralFair(patch, o.fairing);  // fairing.iterations 0: off
+          // Fairing moved vertices along normals: let smoothing and splits tidy up once more
+          // (each step kept only if the worst triangle does not get worse).
+          QualityOptions tidy = o.quality;
+          tidy.rounds = std::min(tidy.rounds, 2);
+          tidy.smoothing.iterations = std::min(tidy.smoothing.iterations, 3);
+          const QualityResult tidied = improvePatchQuality(patch, tidy, o.refinement);
+          f.swaps += tidied.swaps;
+          f.splits += tidied.splits;
+
+          // A planar hole whose bare triangulation already has the better worst triangle (a
+          // removed sliver, a 3-vertex gap) is kept bare: new vertices cannot improve its shape,
+          // which the bare triangles carry exactly, and here they only spoil its worst triangle.
+          if (o.keepBetterBare && worstQuality(bare) > worstQuality(patch)) {
+            Eigen::MatrixX3d P(n, 3);
+            for (int i = 0; i < n; ++i) P.row(i) = bare.points[i].transpose();
+            const Eigen::RowVector3d c = P.colwise().mean();
+            const Eigen::MatrixX3d D = P.rowwise() - c;
+            const double spread = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(D.transpose() * D / n).eigenvalues()[0]));
+            if (spread <= 1e-3 * boundingDiagonal(P)) return bare;
+          }
+          return patch;
+        };
         bool dihedral = options.initial == MeshFillOptions::Triangulation::MinDihedral;
         if (options.initial == MeshFillOptions::Triangulation::Auto) {
           // A crease reaching the loop: two surrounding triangles at a loop vertex, sharing an
@@ -134,78 +279,48 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
               }
           dihedral = !crease;
         }
-        if (dihedral && n <= options.maxDihedralLoop) {
-          patch.triangles = triangulateMinDihedral(patch.points, across, patch.outsideEdge);
-          fill.triangulation = "dihedral";
-        } else {
-          fill.triangulation = "angle";
-          const MinAngleResult tri = triangulateMinAngle(patch.points, sums, across, patch.outsideEdge, options.triangulation);
-          patch.triangles = tri.triangles;
-          fill.sigma = tri.sigma;
-        }
-        HolePatch bare;  // the relaxed initial triangulation, for the planar-hole fallback below
-        if (options.keepBetterBare) {
-          bare = patch;
-          PatchEdges edges(bare);
-          relaxAllEdges(bare, edges, options.refinement);
-        }
-        if (options.refine) {
-          const RefinementResult ref = refinePatch(patch, options.refinement);
-          fill.splits = ref.splits;
-          fill.swaps = ref.swaps;
-          if (ref.capped) fill.message += std::string(fill.message.empty() ? "" : "; ") + "refinement stopped at a safety cap";
-        }
-        const QualityResult improved = improvePatchQuality(patch, options.quality, options.refinement);
-        fill.swaps += improved.swaps;
-        fill.splits += improved.splits;
-        SurroundingRing ring;
-        {
-          std::unordered_map<int, int> local;  // mesh vertex → patch/ring index
-          for (int i = 0; i < n; ++i) local[loop[i]] = i;
-          std::unordered_set<int> seen;
-          for (int i = 0; i < n; ++i)
-            for (int t : incident[loop[i]]) {
-              if (!seen.insert(t).second) continue;
-              std::array<int, 3> tri;
-              int c = mesh.triangles(t, 0);
-              for (int k = 0; k < 3; ++k, c = topo.nextVertex(t, c)) {
-                auto it = local.find(c);
-                if (it == local.end()) {
-                  it = local.emplace(c, n + static_cast<int>(ring.points.size())).first;
-                  ring.points.push_back(point(c));
-                }
-                tri[k] = it->second;
-              }
-              ring.triangles.push_back(tri);
+        HolePatch patch = makePatch(options, dihedral, fill);
+        if (options.checkCrossings) {
+          // A patch whose triangles cross each other or the surface around the hole is no valid
+          // fill: fall back step by step to a plainer one until none crosses (the one crossing
+          // least is kept, and said, when none is clean).
+          int crossings = patchCrossings(patch, loop);
+          struct Step {
+            std::string name;
+            MeshFillOptions o;
+            bool dihedral;
+          };
+          std::vector<Step> steps;
+          MeshFillOptions o = options;
+          o.fairing.iterations = 0;
+          steps.push_back({"without the bilateral filter", o, dihedral});
+          o.shape.order = 0;
+          steps.push_back({"flat placement (the paper's), no bilateral filter", o, dihedral});
+          // The ear cutting can overlap its own ears in a concave hole (it never tests them in a
+          // plane); the other initial triangulation often does not.
+          steps.push_back({std::string("the ") + (dihedral ? "minimum-angle" : "minimum-dihedral") +
+                               " initial triangulation, flat, no bilateral filter", o, !dihedral});
+          o.refine = false;
+          steps.push_back({"the bare triangulation", o, dihedral});
+          steps.push_back({std::string("the bare ") + (dihedral ? "minimum-angle" : "minimum-dihedral") + " triangulation", o, !dihedral});
+          for (size_t k = 0; k < steps.size() && crossings > 0; ++k) {
+            MeshHoleFill f = fill;
+            HolePatch p = makePatch(steps[k].o, steps[k].dihedral, f);
+            const int c = patchCrossings(p, loop);
+            if (c < crossings) {
+              crossings = c;
+              patch = std::move(p);
+              f.fallback = steps[k].name;
+              fill = f;
             }
-        }
-        for (int pass = 0; pass < std::max(1, options.shape.passes); ++pass) {
-          if (pass > 0) {
-            PatchEdges edges(patch);
-            fill.swaps += relaxAllEdges(patch, edges, options.refinement);
           }
-          fairLaplacian(patch, ring, options.shape);
-        }
-        bilateralFair(patch, options.fairing);  // fairing.iterations 0: off
-        // Fairing moved vertices along normals: let smoothing and splits tidy up once more
-        // (each step kept only if the worst triangle does not get worse).
-        QualityOptions tidy = options.quality;
-        tidy.rounds = std::min(tidy.rounds, 2);
-        tidy.smoothing.iterations = std::min(tidy.smoothing.iterations, 3);
-        const QualityResult tidied = improvePatchQuality(patch, tidy, options.refinement);
-        fill.swaps += tidied.swaps;
-        fill.splits += tidied.splits;
-
-        // A planar hole whose bare triangulation already has the better worst triangle (a
-        // removed sliver, a 3-vertex gap) is kept bare: new vertices cannot improve its shape,
-        // which the bare triangles carry exactly, and here they only spoil its worst triangle.
-        if (options.keepBetterBare && worstQuality(bare) > worstQuality(patch)) {
-          Eigen::MatrixX3d P(n, 3);
-          for (int i = 0; i < n; ++i) P.row(i) = bare.points[i].transpose();
-          const Eigen::RowVector3d c = P.colwise().mean();
-          const Eigen::MatrixX3d D = P.rowwise() - c;
-          const double spread = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(D.transpose() * D / n).eigenvalues()[0]));
-          if (spread <= 1e-3 * boundingDiagonal(P)) patch = bare;
+          fill.crossings = crossings;
+          if (!fill.fallback.empty())
+            fill.message += std::string(fill.message.empty() ? "" : "; ") + "its first patch crossed itself or the surface: " +
+                            fill.fallback + (crossings > 0 ? ", still crossing (" + std::to_string(crossings) + " pairs)" : "");
+          else if (crossings > 0)
+            fill.message += std::string(fill.message.empty() ? "" : "; ") + "crosses itself or the surface (" + std::to_string(crossings) +
+                            " pairs) whatever the fallback";
         }
         const int base = static_cast<int>(nv + newPoints.size());
         auto global = [&](int i) { return i < n ? loop[i] : base + (i - n); };
@@ -338,7 +453,7 @@ std::string MeshFillResult::toJson() const {
     w.field("mean_quality", f.meanQuality);
     w.field("share_quality_0_7", f.goodShare);
     w.field("sigma_deg", f.sigma * 180 / M_PI);
-    w.field("triangulation", f.triangulation);
+    w.field("triangulation", f.triangulation).field("fallback", f.fallback).field("crossings", f.crossings);
     w.field("splits", f.splits);
     w.field("swaps", f.swaps);
     w.field("seconds", f.seconds);

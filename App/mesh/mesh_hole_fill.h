@@ -45,6 +45,12 @@ struct MeshFillOptions {
   // surrounding mesh (dihedral above creaseAngle) reaches the loop, minimum dihedral elsewhere.
   enum class Triangulation { MinAngle, MinDihedral, Auto } initial = Triangulation::MinAngle;
   int maxDihedralLoop = 400;
+  // Our addition: each hole's patch is tested exactly for triangles crossing each other, the
+  // surface around the hole or earlier holes' patches (self_intersection.h); where one does, the
+  // hole is filled again step by step plainer (no bilateral filter; flat placement; the bare
+  // triangulation; the other initial triangulation, bare) until none crosses, the report saying
+  // which (MeshHoleFill::fallback). false: the paper's pipeline as it is.
+  bool checkCrossings = true;
   double creaseAngle = 60.0 * M_PI / 180;
   bool keepBetterBare = true;            // a planar hole keeps its bare triangulation when that has the better
                                          // worst triangle (a removed sliver, a 3-vertex gap)
@@ -67,6 +73,8 @@ struct MeshHoleFill {
   double goodShare = 0;                  // share of new triangles with quality ≥ 0.7
   double sigma = 0;                      // the triangulation's normal threshold (radians)
   std::string triangulation;             // "angle" or "dihedral": the one used
+  std::string fallback;                  // the plainer fill kept where the first crossed (checkCrossings); "" none
+  int crossings = 0;                     // pairs of triangles still crossing in the kept patch
   int splits = 0, swaps = 0;
   double seconds = 0;
 };

@@ -19,18 +19,25 @@ struct BoundaryHalfedge {
 };
 
 // The outgoing boundary halfedge at v that closes the fan the tracer entered through
-// `triangle` (which holds from→v): rotate around v across manifold edges until a boundary
-// edge is met. Returns -1 when the fan crosses a non-manifold edge or does not end.
+// `triangle` (which holds from→v): rotate around v across manifold edges, and across seams (a
+// boundary halfedge paired with one running the other way between copies: `partner`, -1 for
+// none) onto the copy of v on the other side, until a boundary edge that is no seam is met.
+// Returns -1 when the fan crosses a non-manifold edge or does not end.
 int nextOnFan(const MeshTopology& topo, int triangle, int v, const std::vector<std::vector<int>>& outgoing,
-              const std::vector<BoundaryHalfedge>& halfedges) {
+              const std::vector<BoundaryHalfedge>& halfedges, const std::vector<int>& partner) {
   int t = triangle;
   for (int guard = 0; guard < 4096; ++guard) {
     const int w = topo.nextVertex(t, v);
     const MeshTopology::Edge& e = topo.edge(v, w);
     if (e.count == 1) {
+      int g = -1;
       for (int h : outgoing[v])
-        if (halfedges[h].to == w && halfedges[h].triangle == t) return h;
-      return -1;
+        if (halfedges[h].to == w && halfedges[h].triangle == t) g = h;
+      if (g < 0) return -1;
+      if (partner[g] < 0) return g;
+      t = halfedges[partner[g]].triangle;  // across the seam: on around the copy of v there
+      v = halfedges[partner[g]].to;
+      continue;
     }
     if (e.count != 2) return -1;
     t = topo.triangle(e, 0) == t ? topo.triangle(e, 1) : topo.triangle(e, 0);
@@ -122,6 +129,7 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
   // corpus's seam class: fills 0.19 of the diagonal off, crossing the surface). Such pairs are
   // taken out of the boundary; a hole that runs into the seam continues from a copy of the vertex
   // it reached (below), so that it is traced as the one hole it is.
+  std::vector<int> partner(halfedges.size(), -1);
   {
     std::unordered_map<std::uint64_t, std::vector<int>> bySites;
     const auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
@@ -133,18 +141,18 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
       for (int g : it->second)
         if (!halfedges[g].used) {
           halfedges[h].used = halfedges[g].used = true;
+          partner[h] = g;
+          partner[g] = static_cast<int>(h);
           report.seamEdges += 2;
           break;
         }
     }
   }
-  // The halfedges left, by the site of their start: where a traced hole reaches a vertex whose own
-  // boundary went on along a seam, it goes on from a coincident copy.
-  std::unordered_map<int, std::vector<int>> outgoingAtSite;
-  for (size_t h = 0; h < halfedges.size(); ++h)
-    if (!halfedges[h].used) outgoingAtSite[site[halfedges[h].from]].push_back(static_cast<int>(h));
-  for (auto& out : outgoing)
-    out.erase(std::remove_if(out.begin(), out.end(), [&](int h) { return halfedges[h].used; }), out.end());
+  // Where a traced hole reaches a vertex whose own boundary goes on along a seam, it goes on around
+  // the fan across the seam (nextOnFan), from the copy of the vertex on the other side.
+  std::vector<int> outgoingFree(outgoing.size(), 0);
+  for (size_t v = 0; v < outgoing.size(); ++v)
+    for (int h : outgoing[v]) outgoingFree[v] += halfedges[h].used ? 0 : 1;
 
   for (size_t h0 = 0; h0 < halfedges.size(); ++h0) {
     if (halfedges[h0].used) continue;
@@ -158,24 +166,20 @@ MeshHoleReport findMeshHoles(const TriangleMesh& mesh, const MeshTopology& topo,
       loop.push_back(h);
       const int v = halfedges[h].to;
       int next = -1;
-      if (outgoing[v].size() == 1) {
+      if (outgoing[v].size() == 1 && partner[outgoing[v][0]] < 0) {
         next = outgoing[v][0];
       } else if (outgoing[v].empty()) {
-        // Its boundary went on along a seam: on from a copy of v, the first free one.
-        for (int g : outgoingAtSite[site[v]])
-          if (!halfedges[g].used || g == static_cast<int>(h0)) { next = g; break; }
-        if (next < 0) {
-          problem = "the boundary stops at vertex " + std::to_string(v);
-          break;
-        }
-        acrossSeam = true;
+        problem = "the boundary stops at vertex " + std::to_string(v);
+        break;
       } else {
-        singular = true;
-        next = nextOnFan(topo, halfedges[h].triangle, v, outgoing, halfedges);
+        singular = singular || outgoingFree[v] > 1;
+        next = nextOnFan(topo, halfedges[h].triangle, v, outgoing, halfedges, partner);
         if (next < 0) {
-          problem = "the boundary passes singular vertex " + std::to_string(v) + " next to a non-manifold edge";
+          problem = "the boundary passes " + std::string(outgoingFree[v] > 1 ? "singular " : "") + "vertex " + std::to_string(v) +
+                    " next to a non-manifold edge";
           break;
         }
+        acrossSeam = acrossSeam || halfedges[next].from != v;
       }
       if (next == static_cast<int>(h0)) break;
       if (halfedges[next].used) { problem = "the boundary runs into another loop at vertex " + std::to_string(v); break; }

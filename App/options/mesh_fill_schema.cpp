@@ -57,6 +57,10 @@ const OptionSchema<MeshFillOptions>& meshFillSchema() {
                         [](O& o) -> double& { return o.fairing.closenessScale; }),
         numberOption<O>(rangedField("featureScale", "--feature-scale", "of the local spacing", "σ_s of the bilateral filter", 0, INFINITY, true),
                         [](O& o) -> double& { return o.fairing.featureScale; }),
+        boolOption<O>(flagField("checkCrossings", "--no-crossing-check", false,
+                                "test each hole's patch exactly for triangles crossing each other or the surface, and fill it "
+                                "again plainer until none does (off: the paper's pipeline as it is)"),
+                      [](O& o) -> bool& { return o.checkCrossings; }),
         numberOption<O>(rangedField("weld", "--weld", "of the diagonal",
                               "merge vertices closer than this first, so that seams of duplicated vertices close and only the "
                               "real holes are filled (hole numbers then count on the merged mesh; 0: the mesh as it is)", 0, 0.01),

@@ -41,6 +41,7 @@
 #include "mesh/fill_metrics.h"
 #include "mesh/mesh_hole_fill.h"
 #include "mesh/mesh_io.h"
+#include "mesh/self_intersection.h"
 #include "options/gnurbs_build_schema.h"
 #include "options/hole_fill_schema.h"
 #include "options/labeled_fit_schema.h"
@@ -406,6 +407,19 @@ PYBIND11_MODULE(HoleFillApp, m) {
      py::arg("progress") = nullptr,
      "Fill holes of a triangle mesh (Hu et al.), options {name: value} of optionSchema('mesh_fill'): (vertices, triangles, "
      "report JSON); the input rows come first, unchanged.");
+  m.def("selfIntersections", [](const Eigen::MatrixX3d& vertices, const Eigen::MatrixX3i& triangles, const std::vector<bool>& subject) {
+    return guarded([&] {
+      const TriangleMesh mesh{vertices, triangles};
+      validateMesh(mesh);
+      if (!subject.empty() && subject.size() != static_cast<size_t>(triangles.rows()))
+        throw Error("subject: one flag per triangle, or none");
+      py::gil_scoped_release release;
+      const SelfIntersections r = selfIntersections(mesh, subject, SIZE_MAX);
+      return std::make_pair(r.pairs, r.skippedTriangles);
+    });
+  }, py::arg("vertices"), py::arg("triangles"), py::arg("subject") = std::vector<bool>{},
+     "Pairs of triangles that cross (exactly; at least one of each a subject, all when none given) and the triangles "
+     "left out of the test (not manifold with the others): (pairs, skipped).");
   m.def("measureMeshFill", [](const Eigen::MatrixX3d& inV, const Eigen::MatrixX3i& inT, const Eigen::MatrixX3d& outV,
                               const Eigen::MatrixX3i& outT, const Eigen::MatrixX3d& gtV, const Eigen::MatrixX3i& gtT) {
     return guarded([&] {

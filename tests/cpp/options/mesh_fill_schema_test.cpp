@@ -14,7 +14,7 @@ TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
       {"maxBoundary", "300"},    {"triangulation", "dihedral"}, {"refine", "false"},        {"densityFactor", "2"},
       {"shapeOrder", "3"},       {"shapePasses", "2"},          {"alongNormals", "false"},  {"smoothIterations", "0"},
       {"fairIterations", "0"},   {"closenessScale", "1.5"},     {"featureScale", "0.25"},
-      {"weld", "1e-06"}};
+      {"checkCrossings", "false"}, {"weld", "1e-06"}};
   setEveryOption(s, o, values);
   EXPECT_EQ(o.maxBoundary, 300);
   EXPECT_EQ(o.initial, MeshFillOptions::Triangulation::MinDihedral);
@@ -28,6 +28,7 @@ TEST(MeshFillSchema, EachOptionReachesTheFieldTheFillReads) {
   EXPECT_EQ(o.fairing.closenessScale, 1.5);
   EXPECT_EQ(o.fairing.featureScale, 0.25);
   EXPECT_EQ(o.weld, 1e-6);
+  EXPECT_FALSE(o.checkCrossings);
   expectEveryOptionReadsBack(s, o, values);
 }
 
