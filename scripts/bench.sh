@@ -33,6 +33,11 @@
 #     faces, folded maps, data goal, weak control points, condition, by shape and noise; then
 #     tests/bench/bench_fitting.cpp --corpus: ours against the least-squares anchors on the same
 #     regions, judged against the truth (data max, band deviation). BENCH_ONLY=fit-corpus runs part 10 alone.
+# 11. tests/bench/bench_mesh_corpus.py in freecadcmd: mesh hole filling, ours vs CGAL PMP vs FreeCAD
+#     fillupHoles on the mesh-hole corpus (tests/corpus/mesh_holes.py, 138 cases: CGAL's and assimp's
+#     meshes with holes as they ship, and six cut classes with ground truth): valid (nothing
+#     crossing, non-manifold, misoriented added), closed, quality, distance, time, by class.
+#     BENCH_ONLY=mesh-corpus runs part 11 alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -90,6 +95,18 @@ bench_preview() {
     rm -rf "$HOME"
   )
 }
+bench_mesh_corpus() {
+  cmake -S "$root" -B "$build" >/dev/null
+  cmake --build "$build" --target holefill_bench_cgal_fill -j "$(nproc)" >/dev/null
+  [ -f "$root/corpus-out/mesh/index.json" ] ||
+    PYTHONPATH="$build/App" /usr/bin/python3 tests/corpus/mesh_holes.py "$root/corpus-out/mesh" >/dev/null
+  (
+    . tests/fcenv.sh "$build/Mod/HoleFill"
+    HOLEFILL_BENCH_CGAL="$build/tests/holefill_bench_cgal_fill" BENCH_MESH_CORPUS="$root/corpus-out/mesh" \
+      freecadcmd tests/bench/bench_mesh_corpus.py 2>"$BENCH_OUT/bench_mesh_corpus.log" | grep '^|'
+    rm -rf "$HOME"
+  )
+}
 bench_fit_corpus() {
   [ -f "$root/corpus-out/fit/plane_strip_clean/region.obj" ] ||
     /usr/bin/python3 tests/corpus/labeled_regions.py "$root/corpus-out/fit" >/dev/null
@@ -98,6 +115,11 @@ bench_fit_corpus() {
   "$build/tests/holefill_bench_fitting" --corpus "$root/corpus-out/fit" tests/corpus/labeled_regions_index.json 2>/dev/null |
     tee "$BENCH_OUT/bench_fit_corpus_anchors.md"
 }
+if [ "${BENCH_ONLY:-}" = mesh-corpus ]; then  # BENCH_ONLY=mesh-corpus runs part 11 alone
+  bench_mesh_corpus
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = fit-corpus ]; then  # BENCH_ONLY=fit-corpus runs part 10 alone
   bench_fit_corpus
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
@@ -175,4 +197,5 @@ bench_thb
 bench_corpus
 bench_preview
 bench_fit_corpus
+bench_mesh_corpus
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
