@@ -21,9 +21,10 @@ COLOR_FILL, COLOR_SKIP, COLOR_PICKED = (1.0, 0.55, 0.1), (0.55, 0.55, 0.55), (0.
 
 
 # Shape choices of the panel: label, options for HoleFill.fillMeshHoles.
-SHAPES = (("Paper (minimum angle, thin plate, bilateral filter)", {}),
+SHAPES = (("Ours (minimum angle, thin plate, quality passes, bilateral filter)", {}),
           ("Closest to the surface (auto triangulation, C2, no bilateral)",
-           {"shapeOrder": 3, "fairIterations": 0, "triangulation": "auto"}))
+           {"shapeOrder": 3, "fairIterations": 0, "triangulation": "auto"}),
+          ("The paper's pipeline exactly (Hu et al.: flat placement, no quality passes)", {"mode": "paper"}))
 
 
 def mesh_from_selection():

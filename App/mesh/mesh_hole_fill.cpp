@@ -388,6 +388,32 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
   return result;
 }
 
+MeshFillOptions paperPipeline(MeshFillOptions o) {
+  const MeshFillOptions d;
+  o.initial = MeshFillOptions::Triangulation::MinAngle;
+  o.refine = true;
+  o.keepBetterBare = false;
+  o.checkCrossings = false;
+  o.triangulation = d.triangulation;
+  o.refinement = d.refinement;
+  o.quality.rounds = 0;
+  o.quality.smoothing.iterations = 0;
+  o.shape.order = 0;
+  o.fairing.iterations = 3;
+  o.fairing.closenessScale = 0.1;
+  o.fairing.featureScale = 0.5;
+  return o;
+}
+
+bool isPaperPipeline(const MeshFillOptions& o) {
+  const MeshFillOptions p = paperPipeline(o);
+  return o.initial == p.initial && o.refine == p.refine && o.keepBetterBare == p.keepBetterBare &&
+         o.checkCrossings == p.checkCrossings && o.refinement.densityFactor == p.refinement.densityFactor &&
+         o.quality.rounds == p.quality.rounds && o.quality.smoothing.iterations == p.quality.smoothing.iterations &&
+         o.shape.order == p.shape.order && o.fairing.iterations == p.fairing.iterations &&
+         o.fairing.closenessScale == p.fairing.closenessScale && o.fairing.featureScale == p.fairing.featureScale;
+}
+
 Outcome MeshFillResult::outcome() const {
   Outcome o;
   for (const MeshHoleFill& f : fills)

@@ -97,6 +97,15 @@ struct MeshFillResult {
   std::string toJson() const;
 };
 
+// The paper's pipeline exactly (Hu et al., for comparing with its Table 1 like for like): its
+// minimum-angle triangulation, density refinement, flat placement (no thin-plate shape), no
+// quality passes, its bilateral filter with σ_c = 0.1·d_v and σ_s = 0.5·d_v as it sets them (see
+// bilateral_fairing.h on why ours reads σ_c otherwise), 3 iterations; none of our additions (no
+// bare-triangulation shortcut, no crossing check). `o`'s holes, limits, weld and progress are kept.
+MeshFillOptions paperPipeline(MeshFillOptions o = {});
+// Whether `o` is that pipeline (the doors' mode "paper"; "ours" otherwise).
+bool isPaperPipeline(const MeshFillOptions& o);
+
 // Throws holefill::Error for an invalid mesh (NaN, bad indices), an empty one, a hole index
 // out of range; broken topology only leaves the affected holes open, with a message.
 MeshFillResult fillMeshHoles(const TriangleMesh& mesh, const MeshFillOptions& options = {});

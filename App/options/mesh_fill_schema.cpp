@@ -24,6 +24,25 @@ OptionBinding<O> triangulationOption() {
           }};
 }
 
+// A preset over the fields below it in the schema (which, set after it, still override it).
+OptionBinding<O> modeOption() {
+  OptionField f{"mode", "--mode", OptionKind::Choice, "",
+                "ours (the defaults below) or paper: Hu et al.'s pipeline exactly (minimum-angle triangulation, refinement, "
+                "flat placement, no quality passes, bilateral filter with the paper's sigma_c = 0.1 d_v, no crossing check), "
+                "for comparing with the paper's Table 1",
+                {"ours", "paper"}};
+  return {f, [](const O& o) { return std::string(isPaperPipeline(o) ? "paper" : "ours"); },
+          [f](O& o, const std::string& t) {
+            if (checkOptionChoice(f, t) == "paper") {
+              o = paperPipeline(o);
+              return;
+            }
+            MeshFillOptions d;  // ours: the defaults, keeping what says which holes and how far
+            d.maxBoundary = o.maxBoundary, d.holes = o.holes, d.weld = o.weld, d.progress = o.progress;
+            o = d;
+          }};
+}
+
 }  // namespace
 
 const OptionSchema<MeshFillOptions>& meshFillSchema() {
@@ -32,6 +51,7 @@ const OptionSchema<MeshFillOptions>& meshFillSchema() {
         flagField("refine", "--no-refine", false, "refine the new triangles to the surrounding density (off: the bare initial triangulation)");
     OptionField normals{"alongNormals", "", OptionKind::Bool, "", "the shape placement moves vertices along their normals only"};
     return OptionSchema<O>{
+        modeOption(),
         integerOption<O>(rangedField("maxBoundary", "--max-boundary", "boundary vertices",
                                "holes with more boundary vertices stay open, e.g. the border of an open scan (0: no limit)", 0, 2e9),
                          [](O& o) -> int& { return o.maxBoundary; }),

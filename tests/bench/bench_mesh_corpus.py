@@ -1,5 +1,5 @@
 """Benchmark: mesh hole filling on the mesh-hole corpus (tests/corpus/mesh_holes.py, issue 26):
-ours (defaults), CGAL PMP triangulate_refine_and_fair_hole and FreeCAD Mesh fillupHoles, side by
+ours (defaults), ours in the paper's mode (Hu et al.'s pipeline exactly), CGAL PMP triangulate_refine_and_fair_hole and FreeCAD Mesh fillupHoles, side by
 side in one run on every case (meshfill_runners.py; BENCH_REPEATS runs each, default 1 here).
 
 Per case and filler (one measure, HoleFillApp.measureMeshFill): boundary edges left, edges of
@@ -28,7 +28,8 @@ import HoleFillApp  # noqa: E402
 OUT = os.environ.get("BENCH_OUT", "/tmp")
 CORPUS = os.environ.get("BENCH_MESH_CORPUS", "corpus-out/mesh")
 ONLY = [c for c in os.environ.get("BENCH_MESH_ONLY", "").split(",") if c]
-FILLERS = (("HoleFill", run_ours), ("CGAL", None), ("FreeCAD", run_freecad))
+FILLERS = (("HoleFill", run_ours), ("HoleFill paper", lambda c: run_ours(c, mode="paper")), ("CGAL", None),
+           ("FreeCAD", run_freecad))
 
 
 def load(case):

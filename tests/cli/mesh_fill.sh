@@ -89,6 +89,15 @@ if "$H" mesh-fill "$T/open_box.obj" --out "$T/dihedral.obj" --triangulation dihe
 else
   fail=$((fail+1)); echo "FAIL --triangulation dihedral"
 fi
+# The paper's pipeline exactly, and without the crossing check; and a seam welded first.
+if "$H" mesh-fill "$T/open_box.obj" --out "$T/paper.obj" --mode paper --json | grep -q '"closed":true' \
+   && "$H" mesh-fill "$T/open_box.obj" --out "$T/nocheck.obj" --no-crossing-check --json | grep -q '"fallback":""' \
+   && "$H" mesh-fill "$T/open_box.obj" --out "$T/welded.obj" --weld 1e-9 --json | grep -q '"welded_vertices":0'; then
+  pass=$((pass+1)); echo "ok   --mode paper, --no-crossing-check, --weld"
+else
+  fail=$((fail+1)); echo "FAIL --mode paper, --no-crossing-check, --weld"
+fi
+expect_error "bad mode" 1 mesh-fill "$T/open_box.obj" --out "$T/o.obj" --mode hu
 # Every format writes and reads back.
 for ext in off ply stl; do
   if "$H" mesh-fill "$T/open_box.obj" --out "$T/filled.$ext" >/dev/null && "$H" mesh-holes "$T/filled.$ext" | grep -q "no holes"; then

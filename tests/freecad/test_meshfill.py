@@ -107,8 +107,9 @@ def test_bad_meshes_give_clear_errors():
 
 def test_weld_merges_a_seam_before_filling():
     """A box whose top is written on copies of its four corners (an exporter's seam) and whose
-    front is cut away: as it is, the seam reads as two more boundary loops; merged first
-    (weld=SEAM_WELD), the one real hole is found and filled into a closed mesh."""
+    front is cut away: as it is, the seam's two sides are paired (no hole) and the one real hole is
+    filled, closed only geometrically (open by index along the seam); merged first
+    (weld=SEAM_WELD), the same hole is filled into a mesh closed by index, a solid."""
     import Mesh
     box = Mesh.createBox(2, 2, 2)
     pts, fac = box.Topology
@@ -128,7 +129,9 @@ def test_weld_merges_a_seam_before_filling():
     assert seamed.CountPoints == 12, seamed.CountPoints
     as_is = HoleFill.meshHoles(seamed)
     welded = HoleFill.meshHoles(seamed, weld=HoleFill.SEAM_WELD)
-    assert len(welded) == 1 and len(as_is) > 1, (len(as_is), len(welded))
+    assert len(welded) == 1 and len(as_is) == 1, (len(as_is), len(welded))
+    _, rep_as_is = HoleFill.fillMeshHoles(seamed)
+    assert not rep_as_is["closed"] and rep_as_is["closed_when_welded"], rep_as_is
     merged, merged_count, dropped = HoleFill.weldVertices(seamed)
     assert (merged.CountPoints, merged_count, dropped) == (8, 4, 0)
     filled, rep = HoleFill.fillMeshHoles(seamed, weld=HoleFill.SEAM_WELD)

@@ -95,7 +95,7 @@ def body():
     assert table is not None and table.isVisible(), "no hole table in the task panel"
     assert table.rowCount() == 2, table.rowCount()
     shape = FreeCADGui.getMainWindow().findChild(QtWidgets.QComboBox, "HoleFillMeshFillShape")
-    assert shape is not None and shape.count() == 2 and shape.currentIndex() == 0
+    assert shape is not None and shape.count() == 3 and shape.currentIndex() == 0
     shape.setCurrentIndex(1)  # the closest-to-surface variant: the report must say which triangulation ran
     nodes = overlay_nodes()
     assert len(nodes) == 1, nodes

@@ -1,9 +1,10 @@
 """GUI test of "Fill mesh holes" on a mesh with a seam of duplicated vertices (as an exporter
 writes a texture seam, CGAL's elephant-with-holes): a sphere with one hole whose two halves share
-no vertex. Selected by a real click; the panel lists the seam as holes and offers "Merge coincident
-vertices first" with the count of copies; a real click on it lists the one real hole; Preview
-says the result is closed; OK makes a closed mesh with the copies merged; the source mesh is
-untouched. Screenshots are saved."""
+no vertex. Selected by a real click; the panel lists the one real hole (the seam's two sides are
+paired, no hole) and offers "Merge coincident vertices first" with the count of copies; Preview
+as it is says the result stays open by index along the seam and that the merge closes it; a real
+click on the merge and Preview again: closed; OK makes a closed, manifold mesh with the copies
+merged; the source mesh is untouched. Screenshots are saved."""
 import math
 import subprocess
 
@@ -69,20 +70,24 @@ def body():
     assert weld is not None and weld.isEnabled() and not weld.isChecked(), "the merge is not offered"
     assert "(%d)" % copies in weld.text(), (weld.text(), copies)
     rows_before = table.rowCount()
-    assert rows_before >= 2, "the seam should read as holes beside the real one: %d" % rows_before
+    assert rows_before == 1, "the seam is no hole: %d rows" % rows_before
     view.viewIsometric()
     view.fitAll()
     h.pump(300)
     view.saveImage(h.shot("gui_meshweld_1_seam_holes.png"), 1024, 768, "White")
+    label = mw.findChild(QtWidgets.QLabel, "HoleFillMeshStatus")
+    h.click_button(mw.findChild(QtWidgets.QPushButton, "HoleFillMeshPreview"))
+    h.wait_for(lambda: label.text().startswith("Preview"))
+    assert "still open" in label.text() and "check 'Merge coincident vertices first'" in label.text(), label.text()
 
     h.click_button(weld)
     h.pump(500)
     assert weld.isChecked()
     assert table.rowCount() == 1, table.rowCount()
     assert len(HoleFill.meshHoles(src.Mesh, weld=HoleFill.SEAM_WELD)) == 1
+    assert not label.text().startswith("Preview"), label.text()  # the holes were listed again: the last Preview is gone
     h.click_button(mw.findChild(QtWidgets.QPushButton, "HoleFillMeshPreview"))
-    label = mw.findChild(QtWidgets.QLabel, "HoleFillMeshStatus")
-    h.wait_for(lambda: label.text().startswith("Preview"))
+    h.wait_for(lambda: label.text().startswith("Preview") and "still open" not in label.text())
     assert "1 of 1 checked holes filled" in label.text() and "The result is closed." in label.text(), label.text()
     assert len(doc.Objects) == count, "a Preview added to the document"
     view.saveImage(h.shot("gui_meshweld_2_preview.png"), 1024, 768, "White")

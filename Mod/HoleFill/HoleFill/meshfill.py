@@ -93,7 +93,8 @@ def defaultMaxBoundary():
 def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["refine"], fairIterations=_MF["fairIterations"],
                   smoothIterations=_MF["smoothIterations"], densityFactor=_MF["densityFactor"], closenessScale=_MF["closenessScale"],
                   featureScale=_MF["featureScale"], progress=None, shapeOrder=_MF["shapeOrder"], triangulation=_MF["triangulation"],
-                  shapePasses=_MF["shapePasses"], alongNormals=_MF["alongNormals"], weld=_MF["weld"]):
+                  shapePasses=_MF["shapePasses"], alongNormals=_MF["alongNormals"], weld=_MF["weld"], mode=_MF["mode"],
+                  checkCrossings=_MF["checkCrossings"]):
     """Fill holes of `mesh`; returns (new Mesh.Mesh, report dict).
 
     holes: hole numbers (0-based, as meshHoles numbers them) or MeshHole dicts; None fills every
@@ -107,6 +108,11 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["
     variation. triangulation: "angle" (the paper's minimum-angle ear cutting, default; better
     across creases), "dihedral" (Liepa's minimum-dihedral program; better on smooth curved holes)
     or "auto" (per hole: minimum angle where a crease of the surrounding mesh reaches the hole).
+    mode: "ours" (the defaults) or "paper" (Hu et al.'s pipeline exactly: flat placement, no quality
+    passes, the paper's bilateral sigma_c, no crossing check; options given besides it that differ
+    from the defaults still apply). checkCrossings: each hole's patch tested exactly for triangles
+    crossing each other or the surface and filled again plainer where one does (the report's
+    fallback and crossings per hole).
     weld > 0 (e.g. SEAM_WELD): coincident vertices merged first, so that seams of duplicated
     vertices close; the result then starts with the merged mesh, and hole numbers are meshHoles(mesh, weld)'s.
     The report has per hole: new_vertices, new_triangles, min/max/mean_quality (Field's
@@ -119,10 +125,13 @@ def fillMeshHoles(mesh, holes=None, maxBoundary=_MF["maxBoundary"], refine=_MF["
         raise HoleFillApp.HoleFillError("no hole selected: pass hole numbers, or holes=None for all")
     if maxBoundary is None:  # documents and macros of earlier versions: the default
         maxBoundary = _MF["maxBoundary"]
-    options = dict(maxBoundary=int(maxBoundary), refine=bool(refine), fairIterations=int(fairIterations),
-                   smoothIterations=int(smoothIterations), densityFactor=float(densityFactor), closenessScale=float(closenessScale),
-                   featureScale=float(featureScale), shapeOrder=int(shapeOrder), triangulation=str(triangulation),
-                   shapePasses=int(shapePasses), alongNormals=bool(alongNormals), weld=float(weld))
+    given = dict(maxBoundary=int(maxBoundary), refine=bool(refine), fairIterations=int(fairIterations),
+                 smoothIterations=int(smoothIterations), densityFactor=float(densityFactor), closenessScale=float(closenessScale),
+                 featureScale=float(featureScale), shapeOrder=int(shapeOrder), triangulation=str(triangulation),
+                 shapePasses=int(shapePasses), alongNormals=bool(alongNormals), weld=float(weld),
+                 checkCrossings=bool(checkCrossings))
+    # The mode first (a preset), then only what differs from the defaults, so that it stays the preset.
+    options = dict(mode=str(mode), **{k: v for k, v in given.items() if v != _MF[k]})
     nv, nt, report = HoleFillApp.fillMeshHoles(v, t, indices, options, progress)
     return _mesh(nv, nt), raiseOnFailure(json.loads(report), "mesh fill")
 
