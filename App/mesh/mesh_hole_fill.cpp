@@ -171,8 +171,12 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
       try {
         const std::vector<int>& loop = hole.loop;
         const int n = static_cast<int>(loop.size());
-        // One patch for the hole under options `o`; dihedral: the triangulation to start from.
-        auto makePatch = [&](const MeshFillOptions& o, bool dihedral, MeshHoleFill& f) {
+        // One patch for the hole under options `o`, from the initial triangulation `start`: the
+        // minimum-angle ear cutting, Liepa's minimum-dihedral program, or a fan from a new vertex at
+        // the loop's centroid (the last resort where both would repeat an edge the mesh has: a loop
+        // whose vertices the surrounding mesh already joins, across a singular vertex).
+        enum class Start { Angle, Dihedral, Fan };
+        auto makePatch = [&](const MeshFillOptions& o, Start start, MeshHoleFill& f) {
           HolePatch patch;
           patch.boundaryCount = n;
           std::vector<Eigen::Vector3d> sums(n), across(n);
@@ -185,7 +189,16 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
           patch.outsideEdge = [&](int i, int j) { return joined(loop[i], loop[j]); };
           f.splits = f.swaps = 0;
           f.sigma = 0;
-          if (dihedral && n <= o.maxDihedralLoop) {
+          if (start == Start::Fan) {
+            Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+            for (int i = 0; i < n; ++i) centre += patch.points[i] / n;
+            double spacing = 0;
+            for (int i = 0; i < n; ++i) spacing += patch.scale[i] / n;
+            patch.points.push_back(centre);
+            patch.scale.push_back(spacing);
+            for (int i = 0; i < n; ++i) patch.triangles.push_back({(i + 1) % n, i, n});  // against the loop, as the others
+            f.triangulation = "fan";
+          } else if (start == Start::Dihedral && n <= o.maxDihedralLoop) {
             patch.triangles = triangulateMinDihedral(patch.points, across, patch.outsideEdge);
             f.triangulation = "dihedral";
           } else {
@@ -279,43 +292,64 @@ MeshFillResult fillMeshHoles(const TriangleMesh& input, const MeshFillOptions& o
               }
           dihedral = !crease;
         }
-        HolePatch patch = makePatch(options, dihedral, fill);
+        const Start first = dihedral ? Start::Dihedral : Start::Angle, other = dihedral ? Start::Angle : Start::Dihedral;
+        HolePatch patch;
+        try {
+          patch = makePatch(options, first, fill);
+        } catch (const Error& e) {
+          // Neither triangulation may repeat an edge the mesh has: the other one, then the fan.
+          const std::string why = e.what();
+          try {
+            patch = makePatch(options, other, fill);
+          } catch (const Error&) {
+            patch = makePatch(options, Start::Fan, fill);
+          }
+          fill.fallback = "the " + fill.triangulation + " initial triangulation (" + why + ")";
+          fill.message += std::string(fill.message.empty() ? "" : "; ") + "filled from " + fill.fallback;
+        }
         if (options.checkCrossings) {
           // A patch whose triangles cross each other or the surface around the hole is no valid
           // fill: fall back step by step to a plainer one until none crosses (the one crossing
           // least is kept, and said, when none is clean).
           int crossings = patchCrossings(patch, loop);
+          bool refilled = false;
           struct Step {
             std::string name;
             MeshFillOptions o;
-            bool dihedral;
+            Start start;
           };
           std::vector<Step> steps;
           MeshFillOptions o = options;
           o.fairing.iterations = 0;
-          steps.push_back({"without the bilateral filter", o, dihedral});
+          steps.push_back({"without the bilateral filter", o, first});
           o.shape.order = 0;
-          steps.push_back({"flat placement (the paper's), no bilateral filter", o, dihedral});
+          steps.push_back({"flat placement (the paper's), no bilateral filter", o, first});
           // The ear cutting can overlap its own ears in a concave hole (it never tests them in a
           // plane); the other initial triangulation often does not.
           steps.push_back({std::string("the ") + (dihedral ? "minimum-angle" : "minimum-dihedral") +
-                               " initial triangulation, flat, no bilateral filter", o, !dihedral});
+                               " initial triangulation, flat, no bilateral filter", o, other});
           o.refine = false;
-          steps.push_back({"the bare triangulation", o, dihedral});
-          steps.push_back({std::string("the bare ") + (dihedral ? "minimum-angle" : "minimum-dihedral") + " triangulation", o, !dihedral});
+          steps.push_back({"the bare triangulation", o, first});
+          steps.push_back({std::string("the bare ") + (dihedral ? "minimum-angle" : "minimum-dihedral") + " triangulation", o, other});
           for (size_t k = 0; k < steps.size() && crossings > 0; ++k) {
             MeshHoleFill f = fill;
-            HolePatch p = makePatch(steps[k].o, steps[k].dihedral, f);
+            HolePatch p;
+            try {
+              p = makePatch(steps[k].o, steps[k].start, f);
+            } catch (const Error&) {
+              continue;  // this step's triangulation repeats an edge: the next
+            }
             const int c = patchCrossings(p, loop);
             if (c < crossings) {
               crossings = c;
               patch = std::move(p);
               f.fallback = steps[k].name;
               fill = f;
+              refilled = true;
             }
           }
           fill.crossings = crossings;
-          if (!fill.fallback.empty())
+          if (refilled)
             fill.message += std::string(fill.message.empty() ? "" : "; ") + "its first patch crossed itself or the surface: " +
                             fill.fallback + (crossings > 0 ? ", still crossing (" + std::to_string(crossings) + " pairs)" : "");
           else if (crossings > 0)

@@ -72,7 +72,8 @@ struct MeshHoleFill {
   double minQuality = 0, maxQuality = 0, meanQuality = 0;
   double goodShare = 0;                  // share of new triangles with quality ≥ 0.7
   double sigma = 0;                      // the triangulation's normal threshold (radians)
-  std::string triangulation;             // "angle" or "dihedral": the one used
+  std::string triangulation;             // "angle", "dihedral" or "fan" (from a new centre vertex, where both others
+                                         // would repeat an edge the mesh has): the one used
   std::string fallback;                  // the plainer fill kept where the first crossed (checkCrossings); "" none
   int crossings = 0;                     // pairs of triangles still crossing in the kept patch
   int splits = 0, swaps = 0;

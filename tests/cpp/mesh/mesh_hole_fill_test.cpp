@@ -432,3 +432,28 @@ TEST(MeshHoleFill, AutoTriangulationKeepsMinimumAngleAtCreases) {
   ASSERT_EQ(s.filledHoles, 1);
   EXPECT_EQ(s.fills[0].triangulation, "dihedral");
 }
+
+TEST(MeshHoleFill, ALoopWhoseChordsTheMeshHasIsFilledFromAFan) {
+  // The open base a b c d of a square pyramid, with both of its diagonals already edges of the
+  // mesh (two fins hanging off them): every ear of either triangulation would repeat one. The
+  // hole is filled from a fan around a new centre vertex instead, and the report says so.
+  TriangleMesh m;
+  m.vertices.resize(7, 3);
+  m.vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1, 0.5, 0.5, -3, 0.5, -3, -3;
+  m.triangles.resize(6, 3);
+  m.triangles << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4,  // the pyramid's sides
+      0, 2, 5, 1, 3, 6;                               // the fins on the diagonals
+  const MeshHoleReport d = findMeshHoles(m);
+  int base = -1;
+  for (size_t h = 0; h < d.holes.size(); ++h)
+    if (d.holes[h].loop.size() == 4 && std::count(d.holes[h].loop.begin(), d.holes[h].loop.end(), 4) == 0) base = static_cast<int>(h);
+  ASSERT_GE(base, 0);
+  MeshFillOptions o;
+  o.holes = {base};
+  const MeshFillResult r = fillMeshHoles(m, o);
+  const MeshHoleFill& f = r.fills[base];
+  ASSERT_TRUE(f.filled) << f.message;
+  EXPECT_EQ(f.triangulation, "fan");
+  EXPECT_NE(f.message.find("filled from the fan initial triangulation"), std::string::npos) << f.message;
+  EXPECT_GE(f.newVertices, 1);
+}
