@@ -6,6 +6,7 @@
 #include "geometry/outcome.h"
 
 #include <cmath>
+#include <map>
 
 #include "geometry/error.h"
 #include "mesh/sample_meshes.h"
@@ -456,4 +457,99 @@ TEST(MeshHoleFill, ALoopWhoseChordsTheMeshHasIsFilledFromAFan) {
   EXPECT_EQ(f.triangulation, "fan");
   EXPECT_NE(f.message.find("filled from the fan initial triangulation"), std::string::npos) << f.message;
   EXPECT_GE(f.newVertices, 1);
+}
+
+TEST(MeshHoleFill, AHoleAcrossAThinWallStaysOnItsSide) {
+  // A thin double wall: an icosphere of radius 1 around one of radius 0.97 (inside out). A cap cut
+  // from the outer one, 0.17 deep at its middle, is filled flat by the paper's placement, which
+  // pierces the inner wall; ours (thin plate, tested for crossings exactly) stays outside it.
+  TriangleMesh outer = samples::icosphere(4, 1.0), inner = samples::icosphere(4, 0.97);
+  for (Eigen::Index t = 0; t < inner.triangles.rows(); ++t) std::swap(inner.triangles(t, 1), inner.triangles(t, 2));
+  TriangleMesh wall;
+  wall.vertices.resize(outer.vertices.rows() + inner.vertices.rows(), 3);
+  wall.vertices << outer.vertices, inner.vertices;
+  wall.triangles.resize(outer.triangles.rows() + inner.triangles.rows(), 3);
+  wall.triangles << outer.triangles, (inner.triangles.array() + static_cast<int>(outer.vertices.rows())).matrix();
+  const auto cut = samples::cutHole(wall, [](const Eigen::Vector3d& c) { return c.norm() > 0.985 && c.z() > std::cos(0.6); });
+  const auto crossings = [&](const MeshFillResult& r) {
+    std::vector<bool> added(r.mesh.triangles.rows(), false);
+    for (Eigen::Index t = cut.mesh.triangles.rows(); t < r.mesh.triangles.rows(); ++t) added[t] = true;
+    return selfIntersections(r.mesh, added).pairs.size();
+  };
+  const MeshFillResult paper = fillMeshHoles(cut.mesh, paperPipeline());
+  ASSERT_EQ(paper.filledHoles, 1);
+  EXPECT_GT(crossings(paper), 0u);
+  const MeshFillResult ours = fillMeshHoles(cut.mesh);
+  ASSERT_EQ(ours.filledHoles, 1);
+  EXPECT_EQ(crossings(ours), 0u);
+  EXPECT_EQ(ours.fills[0].crossings, 0);
+  EXPECT_TRUE(ours.closed);
+}
+
+TEST(MeshHoleFill, AHoleOnASeamIsOneHoleAndTheSeamNone) {
+  // A 10 x 10 grid whose right half lies on copies of the seam's vertices, and a hole cut across
+  // the seam: one hole (not the two seam sides as well), filled without crossing, closed once the
+  // copies are welded.
+  TriangleMesh m = samples::gridPlane(10, 10, 0.1);
+  std::map<int, int> copyOf;
+  const Eigen::Index nv = m.vertices.rows();
+  std::vector<Eigen::RowVector3d> extra;
+  for (Eigen::Index t = 0; t < m.triangles.rows(); ++t) {
+    const Eigen::Vector3d c = (m.vertices.row(m.triangles(t, 0)) + m.vertices.row(m.triangles(t, 1)) + m.vertices.row(m.triangles(t, 2))).transpose() / 3;
+    if (c.x() < 0.5) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int v = m.triangles(t, k);
+      if (std::abs(m.vertices(v, 0) - 0.5) > 1e-12) continue;
+      if (!copyOf.count(v)) {
+        copyOf[v] = static_cast<int>(nv + extra.size());
+        extra.push_back(m.vertices.row(v));
+      }
+      m.triangles(t, k) = copyOf[v];
+    }
+  }
+  m.vertices.conservativeResize(nv + static_cast<Eigen::Index>(extra.size()), 3);
+  for (size_t i = 0; i < extra.size(); ++i) m.vertices.row(nv + static_cast<Eigen::Index>(i)) = extra[i];
+  const auto cut = samples::cutHole(m, [](const Eigen::Vector3d& c) { return (c - Eigen::Vector3d(0.5, 0.5, 0)).norm() < 0.22; });
+  const MeshHoleReport d = findMeshHoles(cut.mesh);
+  EXPECT_GT(d.seamEdges, 0);
+  int inner = 0;
+  for (const MeshHole& h : d.holes) inner += h.length < 3.5 ? 1 : 0;  // not the grid's outer border (4 long)
+  EXPECT_EQ(inner, 1);
+  MeshFillOptions o;
+  for (size_t h = 0; h < d.holes.size(); ++h)
+    if (d.holes[h].length < 3.5) o.holes.push_back(static_cast<int>(h));
+  const MeshFillResult r = fillMeshHoles(cut.mesh, o);
+  EXPECT_EQ(r.filledHoles, 1);
+  std::vector<bool> added(r.mesh.triangles.rows(), false);
+  for (Eigen::Index t = cut.mesh.triangles.rows(); t < r.mesh.triangles.rows(); ++t) added[t] = true;
+  EXPECT_TRUE(selfIntersections(r.mesh, added).pairs.empty());
+  // Only the grid's outer border is left, once the seam's copies are welded.
+  EXPECT_EQ(countBoundaryEdges(r.mesh, weldMap(r.mesh.vertices, 1e-12)), 40);
+}
+
+TEST(MeshHoleFill, ThePapersModeIsItsPipeline) {
+  // The paper places new vertices on the flat initial triangulation and only smooths them with
+  // its bilateral filter: with the filter off, a tube's planar rim is capped exactly in its plane.
+  // Ours continues the wall (thin plate) off that plane. The paper's mode adds nothing of ours:
+  // no crossing test, no fallback, the minimum-angle triangulation.
+  const TriangleMesh t = samples::tube(60, 6, 1.0, 0.5);
+  MeshFillOptions paper = paperPipeline();
+  paper.fairing.iterations = 0;
+  const MeshFillResult flat = fillMeshHoles(t, paper);
+  ASSERT_EQ(flat.filledHoles, 2);
+  double offPlane = 0;
+  for (Eigen::Index v = t.vertices.rows(); v < flat.mesh.vertices.rows(); ++v)
+    offPlane = std::max(offPlane, std::min(std::abs(flat.mesh.vertices(v, 2)), std::abs(flat.mesh.vertices(v, 2) - 0.5)));
+  EXPECT_LT(offPlane, 1e-12);
+  for (const MeshHoleFill& f : flat.fills) {
+    EXPECT_EQ(f.triangulation, "angle");
+    EXPECT_TRUE(f.fallback.empty());
+  }
+  EXPECT_TRUE(isPaperPipeline(paperPipeline()));
+  EXPECT_FALSE(isPaperPipeline(MeshFillOptions{}));
+  const MeshFillResult ours = fillMeshHoles(t);
+  double oursOff = 0;
+  for (Eigen::Index v = t.vertices.rows(); v < ours.mesh.vertices.rows(); ++v)
+    oursOff = std::max(oursOff, std::min(std::abs(ours.mesh.vertices(v, 2)), std::abs(ours.mesh.vertices(v, 2) - 0.5)));
+  EXPECT_GT(oursOff, 1e-3);
 }
