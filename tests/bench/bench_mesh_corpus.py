@@ -72,9 +72,32 @@ def main():
         print("%3d/%d %s" % (k + 1, len(index), case["id"]), file=sys.stderr)
         sys.stderr.flush()
     json.dump(rows, open(os.path.join(OUT, "bench_mesh_corpus.json"), "w"), indent=1)
-    text = table(rows)
+    text = table(rows) + "\n\n" + big_holes()
     open(os.path.join(OUT, "bench_mesh_corpus.md"), "w").write(text + "\n")
     print(text)
+
+
+def big_holes():
+    """Issue 26's scale goal: a 20,000-vertex hole, the cap of a tube of 20,000 segments and 3 rows
+    (radius 1), at three row heights (the rim's density, and so the cap's triangle count)."""
+    import math
+    import time
+    lines = ["| 20,000-vertex hole (tube cap), row height | filler | new triangles | seconds | valid |", "|---|---|---|---|---|"]
+    n = 20000
+    for dz in (0.05, 0.02, 0.005):
+        v = np.array([(math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n), j * dz) for j in range(4) for k in range(n)])
+        t = np.array([f for j in range(3) for k in range(n) for f in (
+            (j * n + k, j * n + (k + 1) % n, (j + 1) * n + (k + 1) % n), (j * n + k, (j + 1) * n + (k + 1) % n, (j + 1) * n + k))],
+            np.int32)
+        for name, options in (("HoleFill", {}), ("HoleFill paper", {"mode": "paper"})):
+            t0 = time.perf_counter()
+            ov, ot, rep = HoleFillApp.fillMeshHoles(v, t, [0], dict(options, maxBoundary=0))
+            dt = time.perf_counter() - t0
+            h = json.loads(rep)["hole_fills"][0]
+            crossing = len(HoleFillApp.selfIntersections(ov, ot, [i >= len(t) for i in range(len(ot))])[0])
+            lines.append("| %g | %s | %d | %.1f | %s |" % (dz, name, h["new_triangles"], dt, "yes" if crossing == 0 else "no (%d)" % crossing))
+            print(lines[-1], file=sys.stderr)
+    return "\n".join(lines)
 
 
 def table(rows):
