@@ -2,8 +2,9 @@
 length, why a hole cannot be filled), draws every hole's boundary in the 3D view (holes to fill
 in orange, the others in grey, the rows selected in the table in red and thicker); Preview fills
 the checked holes without touching the document, draws the new triangles (orange, or coloured by
-their quality on request) and says in the panel what was filled and whether the result is still
-open, with each open hole's reason. Where the mesh has coincident vertices (the seams of an
+their quality on request) and says in the panel what was filled, which holes were filled again
+plainer because their first patch crossed the surface (and which still cross), and whether the
+result is still open, with each open hole's reason. Where the mesh has coincident vertices (the seams of an
 exported scan), "Merge coincident vertices first" lists and fills the holes of the mesh with
 them merged, so that a seam is no hole. OK fills the checked holes into a new mesh object
 (HoleFill.makeMeshFill, one undo step). The source mesh is never modified; Cancel leaves the
@@ -232,6 +233,14 @@ class MeshFillPanel(task_dialog.Panel):
             len(done), len(self.checked()), len(self.previewed[2]),
             sum(f["mean_quality"] * f["new_triangles"] for f in done) / max(1, sum(f["new_triangles"] for f in done)),
             min((f["min_quality"] for f in done), default=0.0))
+        refilled = ["%d (%s)" % (f["hole"], f["fallback"]) for f in done if f.get("fallback")]
+        if refilled:
+            text += " " + translate("HoleFill", "Filled again plainer where the first patch crossed itself or the surface: %s.") % (
+                "; ".join(refilled[:3]) + ("; ..." if len(refilled) > 3 else ""))
+        crossing = [str(f["hole"]) for f in done if f.get("crossings")]
+        if crossing:
+            text += " " + translate("HoleFill", "Still crossing the surface: holes %s (uncheck them, or repair the mesh around them).") % (
+                ", ".join(crossing[:8]) + (", ..." if len(crossing) > 8 else ""))
         if rep["closed"]:
             text += " " + translate("HoleFill", "The result is closed.")
         else:

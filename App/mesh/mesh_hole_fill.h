@@ -75,7 +75,7 @@ struct MeshHoleFill {
   std::string triangulation;             // "angle", "dihedral" or "fan" (from a new centre vertex, where both others
                                          // would repeat an edge the mesh has): the one used
   std::string fallback;                  // the plainer fill kept where the first crossed (checkCrossings); "" none
-  int crossings = 0;                     // pairs of triangles still crossing in the kept patch
+  int crossings = -1;                    // pairs of triangles still crossing in the kept patch; -1: not checked
   int splits = 0, swaps = 0;
   double seconds = 0;
 };
