@@ -22,9 +22,8 @@ COLOR_FILL, COLOR_SKIP, COLOR_PICKED = (1.0, 0.55, 0.1), (0.55, 0.55, 0.55), (0.
 
 
 # Shape choices of the panel: label, options for HoleFill.fillMeshHoles.
-SHAPES = (("Ours (minimum angle, thin plate, quality passes, bilateral filter)", {}),
-          ("Closest to the surface (auto triangulation, C2, no bilateral)",
-           {"shapeOrder": 3, "fairIterations": 0, "triangulation": "auto"}),
+SHAPES = (("Ours (minimum angle, minimum-variation placement, quality passes)", {}),
+          ("Ours, triangulated by the hole (minimum dihedral away from creases)", {"triangulation": "auto"}),
           ("The paper's pipeline exactly (Hu et al.: flat placement, no quality passes)", {"mode": "paper"}))
 
 
@@ -116,9 +115,9 @@ class MeshFillPanel(task_dialog.Panel):
         self.shape.setObjectName("HoleFillMeshFillShape")
         for label, _ in SHAPES:
             self.shape.addItem(label)
-        self.shape.setToolTip(translate("HoleFill", "Hu et al.'s pipeline (minimum-angle triangulation, thin-plate placement, 3 bilateral\n"
-                              "iterations), or the variant that measured closest to the cut-away surface in the\n"
-                              "benchmark (triangulation chosen per hole, smoother placement, no bilateral filter)"))
+        self.shape.setToolTip(translate("HoleFill", "Ours: minimum-angle triangulation, refinement, quality passes and a minimum-variation\n"
+                              "placement (closest to the cut-away surface on the mesh-hole corpus); the same with the\n"
+                              "triangulation chosen per hole; or Hu et al.'s pipeline exactly (flat placement, bilateral filter)"))
         shape_row.addWidget(QtWidgets.QLabel(translate("HoleFill", "Shape")))
         shape_row.addWidget(self.shape)
         layout.addLayout(shape_row)

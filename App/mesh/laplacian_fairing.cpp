@@ -59,7 +59,8 @@ void fairLaplacian(HolePatch& patch, const SurroundingRing& ring, const Laplacia
   Eigen::SparseMatrix<double, Eigen::RowMajor> L(nAll, nAll);
   L.setFromTriplets(lt.begin(), lt.end());
   Eigen::SparseMatrix<double, Eigen::RowMajor> M = L;
-  for (int k = 1; k < options.order; ++k) M = Eigen::SparseMatrix<double, Eigen::RowMajor>(L * M);
+  const int order = options.order > 2 && options.highOrderUpTo > 0 && nu >= options.highOrderUpTo ? 2 : options.order;
+  for (int k = 1; k < order; ++k) M = Eigen::SparseMatrix<double, Eigen::RowMajor>(L * M);
 
   // Each new vertex moves only along its normal, x_i = p_i + h_i n_i: the tangential layout
   // the refinement and smoothing made (and with it the triangle quality) is kept, and a

@@ -35,6 +35,10 @@ struct LaplacianFairingOptions {
   int order = 2;                       // 0: off (the paper's flat placement), 1: membrane, 2: thin plate, 3: minimum variation
   bool alongNormals = true;            // false: vertices move freely (tangential drift is left to the quality pass)
   int passes = 3;                      // solve, relax edges in the new shape, solve again ... (connectivity follows the shape)
+  // From this many new vertices on, an order above 2 is solved at 2: L^3's wider stencil fills its
+  // sparse LU in badly (a 20,000-vertex hole's cap of 0.1 million triangles took 23 s at order 3,
+  // 4 s at 2; docs/benchmarks.md, issue 26). 0: never.
+  int highOrderUpTo = 20000;
 };
 
 // Throws holefill::Error if the sparse solve fails.

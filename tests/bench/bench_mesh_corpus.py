@@ -10,6 +10,7 @@ process from index arrays). valid: nothing non-manifold, misoriented, degenerate
 added, the input kept; closed: no boundary edge left.
 
   BENCH_MESH_CORPUS=DIR (corpus-out/mesh)  BENCH_MESH_ONLY=class,class (all)
+  BENCH_BIG_HOLES=dz,dz (0.05,0.02,0.005: the 20,000-vertex holes' row heights; empty: none)
 Run inside freecadcmd (scripts/bench.sh, BENCH_ONLY=mesh-corpus); writes $BENCH_OUT/bench_mesh_corpus.json
 and .md, and per case the failures to stderr."""
 import json
@@ -84,7 +85,7 @@ def big_holes():
     import time
     lines = ["| 20,000-vertex hole (tube cap), row height | filler | new triangles | seconds | valid |", "|---|---|---|---|---|"]
     n = 20000
-    for dz in (0.05, 0.02, 0.005):
+    for dz in [float(x) for x in os.environ.get("BENCH_BIG_HOLES", "0.05,0.02,0.005").split(",") if x]:
         v = np.array([(math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n), j * dz) for j in range(4) for k in range(n)])
         t = np.array([f for j in range(3) for k in range(n) for f in (
             (j * n + k, j * n + (k + 1) % n, (j + 1) * n + (k + 1) % n), (j * n + k, (j + 1) * n + (k + 1) % n, (j + 1) * n + k))],

@@ -36,9 +36,13 @@ def test_sphere_hole_is_filled_closed_and_keeps_the_input():
     assert [tuple(f) for f in fac[:len(before[1])]] == [tuple(f) for f in before[1]]
     h = rep["hole_fills"][0]
     assert h["new_vertices"] > 10 and h["mean_quality"] > 0.85 and h["min_quality"] > 0.3, h
-    # New points stay between the cut's plane and the sphere.
-    for p in pts[len(before[0]):]:
-        assert 2.0 * math.cos(0.6) - 1e-9 <= p.z <= 2.0 + 1e-9 and p.Length <= 2.0 + 1e-9, p
+    # New points stay above the cut's plane and close to the sphere: the minimum-variation placement
+    # continues its curvature (measured: 0.037 out at most, rms 0.015; issue 5's thin plate with the
+    # bilateral filter stayed inside, 0.10 in at most, rms 0.061; a flat cap is 0.35 in at the middle).
+    added = pts[len(before[0]):]
+    assert all(p.z >= 2.0 * math.cos(0.6) - 1e-9 and abs(p.Length - 2.0) < 0.05 for p in added), \
+        max(added, key=lambda p: abs(p.Length - 2.0))
+    assert math.sqrt(sum((p.Length - 2.0) ** 2 for p in added) / len(added)) < 0.03
     # FreeCAD's volume of the filled sphere lies between the cut sphere's and the full one's.
     assert 0.9 * (4 / 3 * math.pi * 8) < filled.Volume <= 4 / 3 * math.pi * 8
 

@@ -1,9 +1,10 @@
 """GUI test of "Fill mesh holes" where a hole's patch crosses the surface: a thin double wall (a
-sphere of radius 1 around one of radius 0.97, FreeCAD's own spheres) with a cap cut from the
-outer one. Selected by a real click, Preview by a real click: the panel says the hole was filled
-again plainer because its first patch crossed the surface, and that it still crosses (no plainer
-patch clears a wall 0.03 under a cap 0.17 deep); OK keeps it with that said in its report, whose
-count of crossing pairs is the one measured exactly on the result. Screenshots are saved."""
+sphere of radius 1 around one of radius 0.995, FreeCAD's own spheres) with a cap cut from the
+outer one. Selected by a real click, Preview by a real click: the panel says the hole still
+crosses the surface (no patch, plainer or not, clears a wall 0.005 under a cap 0.17 deep: ours
+follows the sphere to about 0.007) and, where a plainer one was kept, which; OK keeps it with that
+said in its report, whose count of crossing pairs is the one measured exactly on the result.
+Screenshots are saved."""
 import FreeCAD
 import FreeCADGui
 from PySide2 import QtWidgets
@@ -11,7 +12,7 @@ from PySide2 import QtWidgets
 import guiharness as h
 
 
-def thin_wall(gap=0.03, cap=0.6):
+def thin_wall(gap=0.005, cap=0.6):
     """FreeCAD's sphere of radius 1 without its top cap, around an inside-out one of radius 1 - gap."""
     import math
     import Mesh
@@ -51,8 +52,7 @@ def body():
     h.click_button(mw.findChild(QtWidgets.QPushButton, "HoleFillMeshPreview"))
     h.wait_for(lambda: label.text().startswith("Preview"))
     text = label.text()
-    assert "1 of 1 checked holes filled" in text and "Filled again plainer where the first patch crossed" in text, text
-    assert "Still crossing the surface: holes 0" in text, text
+    assert "1 of 1 checked holes filled" in text and "Still crossing the surface: holes 0" in text, text
     view.viewIsometric()
     view.fitAll()
     h.pump(300)
@@ -63,8 +63,9 @@ def body():
     assert len(new) == 1, [o.Name for o in doc.Objects]
     rep = json.loads(new[0].HoleFillReport)
     filled = [f for f in rep["hole_fills"] if f["filled"]]
-    assert len(filled) == 1 and filled[0]["crossings"] > 0 and filled[0]["fallback"], filled
-    assert "still crossing" in filled[0]["message"], filled[0]["message"]
+    assert len(filled) == 1 and filled[0]["crossings"] > 0, filled
+    assert ("Filled again plainer" in text) == bool(filled[0]["fallback"]), (text, filled[0]["fallback"])
+    assert ("still crossing" if filled[0]["fallback"] else "whatever the fallback") in filled[0]["message"], filled[0]["message"]
     pts, facets = new[0].Mesh.Topology
     v = np.array([(p.x, p.y, p.z) for p in pts])
     t = np.array(facets, np.int32)

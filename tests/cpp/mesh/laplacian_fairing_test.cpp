@@ -37,3 +37,20 @@ TEST(LaplacianFairing, APlanarHoleStaysPlanarAndOrderZeroLeavesTheFlatPlacement)
   fairLaplacian(q, SurroundingRing{}, o);
   EXPECT_EQ(q.points[6].z(), 0.0);
 }
+
+TEST(LaplacianFairing, AnOrderAboveTwoIsSolvedAtTwoFromTheLimitOn) {
+  // On an uneven loop order 3 and order 2 place the new vertex differently; from a limit of
+  // one new vertex on (the fan has one), order 3 is solved as order 2, exactly; 0: never.
+  const auto paraboloid = [](double x, double y) { return x * x * x + 0.5 * y * y + 0.3 * x * y; };
+  HolePatch two = fan(0.0, paraboloid), three = fan(0.0, paraboloid), limited = fan(0.0, paraboloid);
+  LaplacianFairingOptions o;
+  o.order = 2;
+  fairLaplacian(two, SurroundingRing{}, o);
+  o.order = 3;
+  o.highOrderUpTo = 0;
+  fairLaplacian(three, SurroundingRing{}, o);
+  EXPECT_GT((three.points[6] - two.points[6]).norm(), 1e-6);
+  o.highOrderUpTo = 1;
+  fairLaplacian(limited, SurroundingRing{}, o);
+  EXPECT_EQ(limited.points[6], two.points[6]);
+}
