@@ -365,9 +365,21 @@ def continuity_color(g0rel, g1, g2):
     return TIER_COLORS["none" if g0rel > 1e-6 else "G0" if g1 > 1e-3 else "G1" if g2 > 0.1 else "G2"]
 
 
+def edge_runs(report):
+    """The report's boundary samples cut where their edge changes: [samples of one edge, ...]
+    (stretches of one sample left out: nothing to draw along)."""
+    samples, edges = report["samples_along"], report["sample_edges"]
+    runs, start = [], 0
+    for i in range(1, len(samples) + 1):
+        if i == len(samples) or edges[i] != edges[start]:
+            if i - start >= 2:
+                runs.append(samples[start:i])
+            start = i
+    return runs
+
+
 def show_continuity(obj, report):
     """Draws the measured boundary samples as thick lines coloured by their continuity tier."""
-    samples, edges = report["samples_along"], report["sample_edges"]
     scale = max(report["scale"], 1e-300)
     sep = coin.SoSeparator()
     pick = coin.SoPickStyle()
@@ -384,16 +396,11 @@ def show_continuity(obj, report):
     coords = coin.SoCoordinate3()
     lines = coin.SoLineSet()
     pts, cols, counts = [], [], []
-    start = 0
-    for i in range(len(samples) + 1):
-        if i == len(samples) or (i > start and edges[i] != edges[start]):
-            if i - start >= 2:
-                counts.append(i - start)
-                for k in range(start, i):
-                    x, y, z, g0, g1, g2 = samples[k][:6]
-                    pts.append((x, y, z))
-                    cols.append(continuity_color(g0 / scale, g1, g2))
-            start = i
+    for run in edge_runs(report):
+        counts.append(len(run))
+        for x, y, z, g0, g1, g2 in (r[:6] for r in run):
+            pts.append((x, y, z))
+            cols.append(continuity_color(g0 / scale, g1, g2))
     coords.point.setValues(0, len(pts), pts)
     mat.diffuseColor.setValues(0, len(cols), cols)
     lines.numVertices.setValues(0, len(counts), counts)
@@ -410,21 +417,18 @@ def comb_teeth(report, length=0.2):
     gives length × the report's scale). Returns ({"face": [(points, tips), ...], "support": [...]}, s);
     s is 0 where every κ is 0 (flat on both sides: teeth of zero length)."""
     import math
-    samples, edges = report["samples_along"], report["sample_edges"]
-    finite = [abs(r[c]) for r in samples for c in (9, 10) if math.isfinite(r[c])]
+    finite = [abs(r[c]) for r in report["samples_along"] for c in (9, 10) if math.isfinite(r[c])]
     top = max(finite, default=0.0)
     s = length * report["scale"] / top if top > 1e-12 / max(report["scale"], 1e-300) else 0.0
     combs = {"face": [], "support": []}
-    start = 0
-    for i in range(len(samples) + 1):
-        if i == len(samples) or (i > start and edges[i] != edges[start]):
-            run = [r for r in samples[start:i] if all(math.isfinite(x) for x in r[6:11])]
-            if len(run) >= 2:
-                for side, c in (("face", 9), ("support", 10)):
-                    pts = [tuple(r[:3]) for r in run]
-                    tips = [tuple(r[k] - s * r[c] * r[6 + k] for k in range(3)) for r in run]
-                    combs[side].append((pts, tips))
-            start = i
+    for run in edge_runs(report):
+        run = [r for r in run if all(math.isfinite(x) for x in r[6:11])]
+        if len(run) < 2:
+            continue
+        for side, c in (("face", 9), ("support", 10)):
+            pts = [tuple(r[:3]) for r in run]
+            tips = [tuple(r[k] - s * r[c] * r[6 + k] for k in range(3)) for r in run]
+            combs[side].append((pts, tips))
     return combs, s
 
 

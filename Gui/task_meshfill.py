@@ -95,7 +95,7 @@ class MeshFillPanel(task_dialog.Panel):
         # Seams of duplicated vertices read as holes running side by side (CGAL's elephant: 171
         # loops); merged, only the holes the surface has are left. Offered, not done unasked:
         # the result's vertices are then renumbered.
-        _, self.coincident, _ = HoleFill.weldVertices(obj.Mesh, HoleFill.SEAM_WELD)
+        self.coincident, _ = HoleFill.weldVertices(obj.Mesh, HoleFill.SEAM_WELD, counts=True)
         self.weld = QtWidgets.QCheckBox(translate("HoleFill", "Merge coincident vertices first (%d)") % self.coincident)
         self.weld.setObjectName("HoleFillMeshWeld")
         self.weld.setEnabled(self.coincident > 0)

@@ -20,7 +20,7 @@ import sys
 
 os.environ.setdefault("BENCH_REPEATS", "1")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
-from meshfill_runners import measure, run_cgal, run_freecad, run_ours  # noqa: E402
+from meshfill_runners import adds_no_defect, measure, run_cgal, run_freecad, run_ours  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -61,8 +61,7 @@ def main():
             else:
                 m = measure(c, ov, ot)
                 row.update(m, failed=False, closed=m["boundary_edges_after"] == 0,
-                           valid=(m["non_manifold_edges_added"] == 0 and m["misoriented_edges_added"] == 0 and
-                                  m["degenerate_triangles"] == 0 and m["self_intersections"] == 0 and m["kept_input"]))
+                           valid=adds_no_defect(m) and m["self_intersections"] == 0)
             if not row["valid"] or not row["closed"]:
                 print("%s %s: %s" % (case["id"], name, ", ".join(
                     "%s %s" % (key, row.get(key)) for key in ("failed", "boundary_edges_after", "non_manifold_edges_added",

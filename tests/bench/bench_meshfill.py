@@ -29,8 +29,10 @@ import numpy as np
 
 import HoleFillApp
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
-from meshfill_runners import measure, run_cgal, run_freecad, run_ours  # noqa: E402
+HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench"
+sys.path[:0] = [HERE, os.path.join(os.path.dirname(HERE), "corpus")]
+from meshfill_runners import adds_no_defect, measure, run_cgal, run_freecad, run_ours  # noqa: E402
+from mesh_holes import ball, mean_edge, sharp_vertices, split  # noqa: E402  (the corpus's cuts: one way to cut)
 
 OUT = os.environ.get("BENCH_OUT", "/tmp")
 CGAL_DATA = os.environ.get("CGAL_DATA", os.path.join(OUT, "cgal-data"))
@@ -41,50 +43,14 @@ def off_path(name):
     return os.path.join(CGAL_DATA, "meshes", name)
 
 
-def edge_lengths(v, t):
-    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
-    return np.linalg.norm(v[e[:, 0]] - v[e[:, 1]], axis=1)
-
-
-def sharp_vertices(v, t, degrees=40.0):
-    """Vertices on edges whose dihedral angle exceeds `degrees`."""
-    n = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
-    n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
-    owner = {}
-    sharp = set()
-    for f, tri in enumerate(t):
-        for k in range(3):
-            a, b = int(tri[k]), int(tri[(k + 1) % 3])
-            key = (min(a, b), max(a, b))
-            if key in owner:
-                if np.degrees(np.arccos(np.clip(n[owner[key]] @ n[f], -1, 1))) > degrees:
-                    sharp.update(key)
-            else:
-                owner[key] = f
-    return sorted(sharp)
-
-
-def cut(v, t, centres, radius):
-    """Removes triangles whose centroid lies within `radius` of a centre; compacts both parts."""
-    c = v[t].mean(axis=1)
-    inside = np.zeros(len(t), bool)
-    for p in centres:
-        inside |= np.linalg.norm(c - p, axis=1) < radius
-
-    def compact(tris):
-        used = np.unique(tris)
-        remap = -np.ones(len(v), np.int64)
-        remap[used] = np.arange(len(used))
-        return v[used].copy(), remap[tris].astype(np.int32)
-    return compact(t[~inside]), compact(t[inside])
-
-
 def truth_case(name, file, picks, radius_edges, sharp):
     v, t = HoleFillApp.readMesh(off_path(file))
-    h = radius_edges * float(np.mean(edge_lengths(v, t)))
-    pool = sharp_vertices(v, t) if sharp else list(range(len(v)))
+    t = np.asarray(t, np.int64)
+    h = radius_edges * mean_edge(v, t)
+    pool = list(sharp_vertices(v, t)) if sharp else list(range(len(v)))
     centres = [v[pool[int(f * (len(pool) - 1))]] for f in picks]
-    (iv, it), (gv, gt) = cut(v, t, centres, h)
+    (iv, it), (gv, gt) = split(v, t, np.any([ball(v, t, c, h) for c in centres], axis=0))
+    it, gt = it.astype(np.int32), gt.astype(np.int32)
     holes = json.loads(HoleFillApp.meshHoles(iv, it))["holes"]
     return dict(name=name, kind="truth, " + ("crosses a feature" if sharp else "smooth"), v=iv, t=it, gv=gv, gt=gt,
                 holes=len(holes))
@@ -136,8 +102,7 @@ def main():
                 rows.append(dict(case=c["name"], kind=c["kind"], method=method, ok=False, note=note, seconds=dt[0], total=dt[1]))
                 continue
             m = measure(c, ov, ot)
-            ok = (m["boundary_edges_after"] == 0 and m["non_manifold_edges_added"] == 0 and
-                  m["misoriented_edges_added"] == 0 and m["degenerate_triangles"] == 0 and m["kept_input"])
+            ok = m["boundary_edges_after"] == 0 and adds_no_defect(m)
             rows.append(dict(case=c["name"], kind=c["kind"], method=method, ok=ok, note=note, seconds=dt[0], total=dt[1],
                              holes=c["holes"], **m))
             HoleFillApp.writeMesh(ov, ot, os.path.join(work, "%s_%s.off" % (safe, method.replace(" ", "_").lower())))

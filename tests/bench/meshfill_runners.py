@@ -85,5 +85,12 @@ def run_cgal(c, work):
     return ov, ot, (best, total), note
 
 
+def adds_no_defect(m):
+    """Whether a fill (measure's dict) added nothing non-manifold, misoriented or degenerate and
+    kept the input; the crossing count is judged by the caller (issue 5's table predates it)."""
+    return (m["non_manifold_edges_added"] == 0 and m["misoriented_edges_added"] == 0 and m["degenerate_triangles"] == 0
+            and m["kept_input"])
+
+
 def measure(c, ov, ot):
     return json.loads(HoleFillApp.measureMeshFill(c["v"], c["t"], ov, ot, c["gv"], c["gt"]))

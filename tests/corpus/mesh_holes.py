@@ -121,6 +121,14 @@ def ball(v, t, centre, radius):
     return np.linalg.norm(v[t].mean(axis=1) - centre, axis=1) < radius
 
 
+def tangent_at(v, t, c, rng):
+    """A random unit direction in the surface's tangent plane at its vertex nearest `c`."""
+    k = int(np.argmin(np.linalg.norm(v - c, axis=1)))
+    normal = face_normals(v, t)[np.any(t == k, axis=1)].sum(axis=0)
+    d = np.cross(normal, rng.normal(size=3))
+    return d / max(np.linalg.norm(d), 1e-300)
+
+
 def cut(cls, v, t, rng):
     """The triangles to remove for a cut class (a mask) and a note; None where the class does not
     apply to this mesh."""
@@ -139,20 +147,14 @@ def cut(cls, v, t, rng):
         return ball(v, t, pick(sharp), 3 * h), "radius 3 edges on a sharp edge"
     if cls == "strip":
         c = pick(np.arange(len(v)))
-        k = int(np.argmin(np.linalg.norm(v - c, axis=1)))
-        normal = face_normals(v, t)[np.any(t == k, axis=1)].sum(axis=0)
-        direction = np.cross(normal, rng.normal(size=3))
-        direction /= max(np.linalg.norm(direction), 1e-300)
+        direction = tangent_at(v, t, c, rng)
         a, b = c - 7 * h * direction, c + 7 * h * direction
         p = v[t].mean(axis=1)
         s = np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0, 1)
         return np.linalg.norm(p - (a + s[:, None] * (b - a)), axis=1) < 1.5 * h, "capsule 14 x 3 edges"
     if cls == "touching":
         c = pick(np.arange(len(v)))
-        k = int(np.argmin(np.linalg.norm(v - c, axis=1)))
-        normal = face_normals(v, t)[np.any(t == k, axis=1)].sum(axis=0)
-        tangent = np.cross(normal, rng.normal(size=3))
-        tangent /= max(np.linalg.norm(tangent), 1e-300)
+        tangent = tangent_at(v, t, c, rng)
         r = 2.5 * h
         return ball(v, t, c + r * tangent, r) | ball(v, t, c - r * tangent, r), "two balls of 2.5 edges meeting at a vertex"
     return None

@@ -84,17 +84,22 @@ def sample_document(doc_name, label, sample):
     return doc, src
 
 
+def click_screen(x, y):
+    """A real left click (xdotool) at global screen position (x, y)."""
+    import subprocess
+    subprocess.run(["xdotool", "mousemove", str(x), str(y)], check=True)
+    pump(250)
+    subprocess.run(["xdotool", "click", "1"], check=True)
+    pump(400)
+
+
 def click_at(view, p):
     """A real click (xdotool) at the screen position of 3D point p in the active view."""
-    import subprocess
     from PySide2 import QtCore
     vp = view.graphicsView().viewport()
     sx, sy = view.getPointOnScreen(p)
     g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
-    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
-    pump(250)
-    subprocess.run(["xdotool", "click", "1"], check=True)
-    pump(400)
+    click_screen(g.x(), g.y())
 
 
 def task_ok_button():

@@ -5,7 +5,6 @@ panel lists it and draws it), Preview (the report says the point was passed thro
 Fill keeps the point in its Points property and its face passes through it, where the flat top
 would miss it by 2; Clear empties the list. Screenshots are saved."""
 import json
-import subprocess
 
 import FreeCAD
 import FreeCADGui
@@ -33,10 +32,7 @@ def body():
     name, x, y = h.visible_hole_edge(view, src, hole.edges)
     assert name, "no hole edge visible at its midpoint"
     FreeCADGui.Selection.clearSelection()
-    subprocess.run(["xdotool", "mousemove", str(x), str(y)], check=True)
-    h.pump(300)
-    subprocess.run(["xdotool", "click", "1"], check=True)
-    h.pump(500)
+    h.click_screen(x, y)
     assert [n for s in FreeCADGui.Selection.getSelectionEx() for n in s.SubElementNames] == [name]
     FreeCADGui.runCommand("HoleFill_FillHole")
     h.pump(800)

@@ -6,11 +6,10 @@ as it is says the result stays open by index along the seam and that the merge c
 click on the merge and Preview again: closed; OK makes a closed, manifold mesh with the copies
 merged; the source mesh is untouched. Screenshots are saved."""
 import math
-import subprocess
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtWidgets
+from PySide2 import QtWidgets
 
 import guiharness as h
 
@@ -50,14 +49,8 @@ def body():
     view.viewFront()
     view.fitAll()
     h.pump(500)
-    vp = view.graphicsView().viewport()
-    sx, sy = view.getPointOnScreen(FreeCAD.Vector(0, -5, 0))
-    g = vp.mapToGlobal(QtCore.QPoint(sx, vp.height() - 1 - sy))
     FreeCADGui.Selection.clearSelection()
-    subprocess.run(["xdotool", "mousemove", str(g.x()), str(g.y())], check=True)
-    h.pump(300)
-    subprocess.run(["xdotool", "click", "1"], check=True)
-    h.pump(500)
+    h.click_at(view, FreeCAD.Vector(0, -5, 0))
     assert [o.Name for o in FreeCADGui.Selection.getSelection()] == ["Scan"]
     count = len(doc.Objects)
 
@@ -92,11 +85,7 @@ def body():
     assert len(doc.Objects) == count, "a Preview added to the document"
     view.saveImage(h.shot("gui_meshweld_2_preview.png"), 1024, 768, "White")
 
-    from PySide2.QtTest import QTest
-    ok = [bb.button(QtWidgets.QDialogButtonBox.Ok) for bb in mw.findChildren(QtWidgets.QDialogButtonBox)
-          if bb.isVisible() and bb.button(QtWidgets.QDialogButtonBox.Ok) is not None and bb.button(QtWidgets.QDialogButtonBox.Ok).isVisible()]
-    assert ok, "no OK button"
-    QTest.mouseClick(ok[-1], QtCore.Qt.LeftButton)
+    h.click_button(h.task_ok_button())
     h.pump(1000)
     new = [o for o in doc.Objects if o.Name != "Scan"]
     assert len(new) == 1 and new[0].isDerivedFrom("Mesh::Feature"), [o.Name for o in doc.Objects]

@@ -57,12 +57,14 @@ def _mesh(vertices, triangles):
     return Mesh.Mesh((points, [tuple(f) for f in triangles.tolist()]))
 
 
-def weldVertices(mesh, weld=SEAM_WELD):
+def weldVertices(mesh, weld=SEAM_WELD, counts=False):
     """`mesh` with its coincident vertices (within weld × the bounding-box diagonal) merged, as
-    fillMeshHoles(weld=) does first: (new Mesh.Mesh, merged vertices, dropped triangles)."""
+    fillMeshHoles(weld=) does first: (new Mesh.Mesh, merged vertices, dropped triangles).
+    counts=True: only (merged vertices, dropped triangles), without building the new Mesh (a panel
+    that offers the merge needs no more)."""
     v, t = _arrays(mesh)
     wv, wt, merged, dropped = HoleFillApp.weldVertices(v, t, float(weld))
-    return _mesh(wv, wt), merged, dropped
+    return (merged, dropped) if counts else (_mesh(wv, wt), merged, dropped)
 
 
 def meshHoles(mesh, weld=0):
