@@ -38,6 +38,8 @@
 #     meshes with holes as they ship, and six cut classes with ground truth): valid (nothing
 #     crossing, non-manifold, misoriented added), closed, quality, distance, time, by class.
 #     BENCH_ONLY=mesh-corpus runs part 11 alone.
+# 12. tests/bench/bench_fill_points.py in freecadcmd: a fill through a point of the removed face,
+#     ours vs Surface Filling's Points, on every 23rd B-rep corpus hole. BENCH_ONLY=fill-points runs it alone.
 # Prints the tables; results in bench-out/. Paste the printed tables into docs/benchmarks.md.
 # BENCH_PARAM_HOLES (default 1000) sets the size of the synthetic test set used.
 set -euo pipefail
@@ -115,6 +117,17 @@ bench_fit_corpus() {
   "$build/tests/holefill_bench_fitting" --corpus "$root/corpus-out/fit" tests/corpus/labeled_regions_index.json 2>/dev/null |
     tee "$BENCH_OUT/bench_fit_corpus_anchors.md"
 }
+if [ "${BENCH_ONLY:-}" = fill-points ]; then  # BENCH_ONLY=fill-points runs part 12 alone
+  export CORPUS_OUT="$root/corpus-out/brep"
+  [ -f "$CORPUS_OUT/index.json" ] || "$root/scripts/make_corpus.sh"
+  (
+    . tests/fcenv.sh "$build/Mod/HoleFill"
+    BENCH_CORPUS="$CORPUS_OUT" freecadcmd tests/bench/bench_fill_points.py 2>&1 | grep -a '^|\|corpus holes' | sed 's/.*\([0-9][0-9]* corpus holes\)/\1/'
+    rm -rf "$HOME"
+  )
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
+  exit 0
+fi
 if [ "${BENCH_ONLY:-}" = mesh-corpus ]; then  # BENCH_ONLY=mesh-corpus runs part 11 alone
   bench_mesh_corpus
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), $(date -u +%Y-%m-%d)"
