@@ -3,7 +3,8 @@
 // the region to that rectangle (domain_extension.h), and the cubic tensor-product fit trimmed by
 // the region's boundary (tensor_fit.h). `extend = false` fits the region alone, for comparison.
 // The control net is chosen by the data: refined while the fit misses and what is left is not
-// scan noise, then, on a clean region, knots inserted where it still misses (localRefinements).
+// scan noise, then, on a clean region, knots inserted where it still misses (localRefinements), or
+// under scan noise cells refined there (truncated hierarchical B-splines, bidgcn.md sec. 5's space).
 #pragma once
 
 #include "geometry/outcome.h"
@@ -66,11 +67,19 @@ struct LabeledFitOptions {
   // nothing more) and the fit still misses, knots are inserted where it misses: in the middle of
   // the knot spans, in u and in v, holding the worst vertex, each insertion kept as a refinement
   // is (the data max, rms or bias falls; no weak control point; condition below 1e8). Not under
-  // scan noise, where the worst vertex is mostly the noise's. At most this many; 0: none.
+  // scan noise, where the worst vertex is mostly the noise's and a knot line follows it across the
+  // whole domain. At most this many; 0: none.
   // Measured on the 131-region corpus (docs/benchmarks.md, thirteenth round): every clean region
   // meets the data goal with them (bspline_uslot_clean_cw 1.79e-3 -> 8.8e-4 of the diagonal
   // off the truth; 45 of 45 clean regions, 44 without).
   int localRefinements = 8;
+  // Under scan noise the same number of steps refine cells instead (THB: TensorFitOptions::
+  // refinedCells) around the vertices whose neighbourhoods, or runs along the boundary, miss by
+  // more than the noise explains (a χ² test on their residuals), first where only such single
+  // misses are left and then where the whole net stops; a cell is refined at most localLevels
+  // times (its knot spans halved each time); 0: never. Measured on the corpus's 86 noisy regions
+  // (docs/benchmarks.md, fifteenth round).
+  int localLevels = 3;
   // How far the untrimmed surface reaches past the domain rectangle, as a fraction of the
   // rectangle's larger side: the extension's margin (a width, kept when its grid is rebuilt
   // finer). Reverse engineering extends a fitted surface past its region so that its neighbours

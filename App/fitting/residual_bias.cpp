@@ -7,7 +7,7 @@
 
 namespace holefill {
 
-ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& residual, int window) {
+NeighbourhoodMeans neighbourhoodMeans(const TriangleMesh& mesh, const Eigen::VectorXd& residual, int window) {
   const int n = static_cast<int>(mesh.vertices.rows());
   if (residual.size() != n) throw Error("the residual has " + std::to_string(residual.size()) + " values for " + std::to_string(n) + " vertices");
   if (window < 1) throw Error("the neighbourhood must hold at least one vertex");
@@ -25,7 +25,7 @@ ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& resid
       next[fill[a]++] = mesh.triangles(t, (k + 1) % 3);
       next[fill[a]++] = mesh.triangles(t, (k + 2) % 3);
     }
-  ResidualBias bias;
+  NeighbourhoodMeans out{Eigen::VectorXd(n), Eigen::VectorXi(n)};
   std::vector<int> seenBy(n, -1), ring, grown;
   for (int v = 0; v < n; ++v) {
     double sum = residual(v);
@@ -44,8 +44,19 @@ ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& resid
           }
       ring.swap(grown);
     }
-    const double mean = std::abs(sum / count);
-    if (mean > bias.max || bias.at < 0) bias.max = mean, bias.at = v;
+    out.mean(v) = sum / count;
+    out.count(v) = count;
+  }
+  return out;
+}
+
+ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& residual, int window) {
+  const Eigen::VectorXd mean = neighbourhoodMeans(mesh, residual, window).mean.cwiseAbs();
+  ResidualBias bias;
+  if (mean.size() > 0) {
+    Eigen::Index at = 0;
+    bias.max = mean.maxCoeff(&at);
+    bias.at = static_cast<int>(at);
   }
   return bias;
 }

@@ -19,6 +19,14 @@ struct ResidualBias {
   int at = -1;     // the vertex whose neighbourhood it is
 };
 
+// Per vertex, the mean of `residual` over its neighbourhood and how many vertices that holds
+// (the neighbourhood as residualBias's). Throws Error as residualBias.
+struct NeighbourhoodMeans {
+  Eigen::VectorXd mean;
+  Eigen::VectorXi count;
+};
+NeighbourhoodMeans neighbourhoodMeans(const TriangleMesh& mesh, const Eigen::VectorXd& residual, int window);
+
 // `residual`: per vertex of `mesh`, the signed residual along the normal. A vertex's
 // neighbourhood: its rings taken whole until they hold `window` vertices (itself included), or
 // its whole component. Throws Error when the sizes disagree or window < 1.

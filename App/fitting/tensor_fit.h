@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <TopoDS_Face.hxx>
 #include <vector>
 
@@ -41,6 +42,16 @@ struct TensorFitOptions {
   // knots are not uniform (labeled fitting inserts them where its fit misses, labeled_fit.h).
   // Empty: the uniform knots of controlU (controlV); given, they decide that direction's count.
   std::vector<double> knotsU, knotsV;
+  // Cells refined locally, as truncated hierarchical B-splines (fitting/thb_spline.h): the uniform
+  // knots of controlU × controlV make level 0 (controlU − 3 × controlV − 3 cells), and each entry
+  // (level, i, j) refines cell (i, j) of that level, which must lie in the level's domain when its
+  // turn comes (entries are applied level by level, in order). The unknowns are then the active THB
+  // functions, each a sum of finest-level B-splines, so that a few cells gain control where the fit
+  // misses without a knot line across the whole domain (which under scan noise lets every span
+  // it crosses follow the noise); the surface is the same spline written at the finest level.
+  // Weak control points and the condition are the THB functions'. Needs uniform knots (knotsU
+  // and knotsV empty).
+  std::vector<std::array<int, 3>> refinedCells;
 };
 
 struct TensorFitResult {
@@ -49,9 +60,10 @@ struct TensorFitResult {
   bool valid = false;                 // BRepCheck_Analyzer on the face
   Eigen::MatrixX2d regionUV;          // the region vertices' parameters the face is trimmed at (corrected)
   int correctionRounds = 0;           // parameter corrections taken
-  double dataMax = 0, dataRms = 0;    // region vertices to the surface at their parameters / region diagonal
+  double dataMax = 0, dataRms = 0;    // region vertices to the surface / region diagonal: the boundary's at their parameters, inner ones at their closest points
   Eigen::Index dataMaxAt = 0;         // the region vertex that is dataMax off
-  int weakControlPoints = 0;
+  int unknowns = 0;                   // the control points solved for (the THB functions where refinedCells are given)
+  int weakControlPoints = 0;          // unknowns whose support holds fewer than three fitted points
   double log10Condition = 0;          // of the points' own normal matrix BᵀB, unweighted and without the thin plate (infinite when singular)
 };
 

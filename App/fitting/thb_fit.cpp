@@ -13,25 +13,6 @@
 
 namespace holefill {
 
-namespace {
-
-// The finest level's knot vectors and the map T from active-function coefficients to finest
-// B-spline coefficients (index a·numV + b).
-Eigen::SparseMatrix<double> finestMap(const ThbSpace& s, std::vector<double>& Uu, std::vector<double>& Uv) {
-  const int L = s.levels() - 1;
-  Uu = clampedUniformKnots(s.degree(), s.cellsU(L), 0, 1);
-  Uv = clampedUniformKnots(s.degree(), s.cellsV(L), 0, 1);
-  const int nv = s.cellsV(L) + s.degree(), nFine = (s.cellsU(L) + s.degree()) * nv;
-  std::vector<Eigen::Triplet<double>> t;
-  for (size_t k = 0; k < s.functions().size(); ++k)
-    for (const auto& [ab, c] : s.functions()[k].finest) t.emplace_back(ab.first * nv + ab.second, static_cast<int>(k), c);
-  Eigen::SparseMatrix<double> T(nFine, static_cast<int>(s.functions().size()));
-  T.setFromTriplets(t.begin(), t.end());
-  return T;
-}
-
-}  // namespace
-
 void ThbFitResult::writeFields(JsonWriter& j) const {
   j.key("iterations").beginArray();
   for (const auto& h : history)
@@ -64,8 +45,9 @@ ThbFitResult fitThb(const Eigen::MatrixX3d& points, const Eigen::MatrixX2d& uv0,
   r.uv = uv0.cwiseMax(0.0).cwiseMin(1.0);
   for (int it = 0;; ++it) {
     ThbSpace& s = r.space;
-    std::vector<double> Uu, Uv;
-    const Eigen::SparseMatrix<double> T = finestMap(s, Uu, Uv);
+    const int L = s.levels() - 1;
+    const std::vector<double> Uu = clampedUniformKnots(s.degree(), s.cellsU(L), 0, 1), Uv = clampedUniformKnots(s.degree(), s.cellsV(L), 0, 1);
+    const Eigen::SparseMatrix<double> T = s.finestMap();
     const int p = s.degree(), nvFine = static_cast<int>(Uv.size()) - p - 1;
     // Data rows in the finest basis, mapped to the active functions.
     std::vector<Eigen::Triplet<double>> bt;

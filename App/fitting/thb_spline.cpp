@@ -107,6 +107,28 @@ void ThbSpace::rebuild() {
   }
 }
 
+ThbSpace refinedThbSpace(int degree, int cellsU, int cellsV, std::vector<std::array<int, 3>> cells) {
+  ThbSpace space(degree, cellsU, cellsV);
+  std::stable_sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
+  for (size_t k = 0; k < cells.size();) {
+    std::vector<std::pair<int, int>> level;
+    const int l = cells[k][0];
+    for (; k < cells.size() && cells[k][0] == l; ++k) level.push_back({cells[k][1], cells[k][2]});
+    space.refine(l, level);
+  }
+  return space;
+}
+
+Eigen::SparseMatrix<double> ThbSpace::finestMap() const {
+  const int L = levels() - 1, nv = cellsV(L) + p_, nFine = (cellsU(L) + p_) * nv;
+  std::vector<Eigen::Triplet<double>> t;
+  for (size_t k = 0; k < basis_.size(); ++k)
+    for (const auto& [ab, c] : basis_[k].finest) t.emplace_back(ab.first * nv + ab.second, static_cast<int>(k), c);
+  Eigen::SparseMatrix<double> T(nFine, static_cast<int>(basis_.size()));
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
+}
+
 std::map<std::pair<int, int>, double> ThbSpace::hierarchical(int level, int i, int j) const {
   std::map<std::pair<int, int>, double> c{{{i, j}, 1.0}};
   for (int m = level; m + 1 < levels(); ++m) {

@@ -43,6 +43,10 @@ class ThbSpace {
 
   // Values of all active functions at (u, v) in [0, 1]², as (function index, value) pairs.
   std::vector<std::pair<int, double>> evaluate(double u, double v) const;
+  // Every active function in the finest level's tensor basis: a (finest functions) × (active
+  // functions) matrix, the finest function (a, b) at row a · (cellsV(L) + degree) + b, so that
+  // the finest B-spline's control points are this times the active functions' coefficients.
+  Eigen::SparseMatrix<double> finestMap() const;
   // The finest-level coefficients of one tensor B-spline of `level`, untruncated (the
   // hierarchical, not truncated, basis function), for comparisons.
   std::map<std::pair<int, int>, double> hierarchical(int level, int i, int j) const;
@@ -57,5 +61,10 @@ class ThbSpace {
   std::vector<std::array<Eigen::MatrixXd, 2>> refinement_;  // per level ℓ, 1D matrices: level-ℓ functions in level ℓ+1's basis
   std::vector<Function> basis_;
 };
+
+// The space of `degree` over cellsU × cellsV cells with `cells` (level, i, j) refined, level by
+// level in the order given (a cell of level ℓ + 1 must lie in a cell refined at ℓ). Throws Error
+// as the constructor and refine do.
+ThbSpace refinedThbSpace(int degree, int cellsU, int cellsV, std::vector<std::array<int, 3>> cells);
 
 }  // namespace holefill

@@ -265,10 +265,14 @@ struct Measure {
   double dataMax = 0, dataRms = 0, truthToFit = 0, fitToTruth = 0, log10Cond = 0, seconds = 0;
   int weak = 0;
   int validFace = -1;  // the trimmed face passes BRepCheck: 1, 0; -1 where the method makes none
+  // The fit's own weak control points and condition, where its unknowns are not the surface's
+  // B-splines (cells refined locally: THB functions, tensor_fit.h); supportAndCondition then keeps them.
+  bool ownSupport = false;
 };
 
 // Weak control points and the log10 condition of BᵀB for the points' parameters.
 void supportAndCondition(const BSplineSurface& s, const Eigen::MatrixX2d& uv, Measure& m) {
+  if (m.ownSupport) return;
   const int nu = s.numU(), nv = s.numV(), pu = s.degreeU, pv = s.degreeV;
   std::vector<Eigen::Triplet<double>> T;
   std::vector<int> support(nu * nv, 0);
@@ -431,7 +435,8 @@ void curvaturePicture(const BSplineSurface& s, const std::string& path, const st
 // elsewhere); 12 x 12 cubic control points (ours refined from there). fittedUV: the parameters each
 // fitted point got; validFace: whether the trimmed face is valid (-1: the anchors trim none).
 BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<LabeledSegment>& labels, Eigen::MatrixX2d& fittedUV,
-                     int& validFace) {
+                     Measure& m) {
+  int& validFace = m.validFace;
   validFace = -1;
   if (method <= 1 || method == 4 || method == 8 || method == 9 || method == 10) {
     LabeledFitOptions o;
@@ -456,6 +461,11 @@ BSplineSurface fitBy(size_t method, const TriangleMesh& mesh, const std::vector<
     fittedUV = r.extension.uv.rows() > 0 ? r.extension.uv : r.parameterization.uv;  // no extension, or one given up
     fittedUV.topRows(r.fit.regionUV.rows()) = r.fit.regionUV;                         // as corrected
     validFace = r.fit.valid ? 1 : 0;
+    if (r.fit.unknowns != r.fit.surface.numU() * r.fit.surface.numV()) {
+      m.ownSupport = true;
+      m.weak = r.fit.weakControlPoints;
+      m.log10Cond = r.fit.log10Condition;
+    }
     return r.fit.surface;
   }
   if (method == 5) {
@@ -584,7 +594,7 @@ int runCorpus(const std::string& corpus, const std::string& indexPath, const std
         const auto t0 = std::chrono::steady_clock::now();
         BSplineSurface s;
         if (mi != 6 && mi != 7) {
-          s = fitBy(mi, mesh, labels, fittedUV, m.validFace);
+          s = fitBy(mi, mesh, labels, fittedUV, m);
           m.seconds = seconds(t0);
         } else {
           const std::string key = "case" + std::to_string(regionNumber) + (mi == 6 ? "_smooth" : "_raw");
@@ -788,7 +798,7 @@ int main(int argc, char** argv) {
         Eigen::MatrixX2d fittedUV;
         const auto t0 = std::chrono::steady_clock::now();
         if (mi <= 3) {
-          s = fitBy(mi, c.region.mesh, c.region.segments, fittedUV, m.validFace);
+          s = fitBy(mi, c.region.mesh, c.region.segments, fittedUV, m);
           m.seconds = seconds(t0);
           if ((k == 0 || k == 7) && mi != 2) {
             const char* tag[4] = {"ours", "ours_noext", "", "thinplate"};

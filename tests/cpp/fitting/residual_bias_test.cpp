@@ -70,6 +70,13 @@ TEST(ResidualBias, ANeighbourhoodTakesWholeRings) {
   r(centre) = 1;
   EXPECT_NEAR(residualBias(m, r, 8).max, 1.0 / 19, 1e-12);
   EXPECT_NEAR(residualBias(m, r, 1).max, 1.0, 1e-12);
+  // Per vertex: the centre's own mean and count, and a neighbour two rings out sees it too.
+  const NeighbourhoodMeans means = neighbourhoodMeans(m, r, 8);
+  EXPECT_EQ(means.count(centre), 19);
+  EXPECT_NEAR(means.mean(centre), 1.0 / 19, 1e-12);
+  int seeing = 0;
+  for (Eigen::Index v = 0; v < r.size(); ++v) seeing += means.mean(v) > 0;
+  EXPECT_EQ(seeing, 19);  // the vertices within two rings of it (the grid's rings are symmetric)
 }
 
 TEST(ResidualBias, SizesThatDisagreeAreAClearError) {

@@ -132,3 +132,34 @@ TEST(ThbSpline, ReproducesCubicsAndRefusesBadInput) {
   t.refine(0, {{0, 0}});
   EXPECT_THROW(t.refine(1, {{5, 5}}), Error);  // not in Ω^1
 }
+
+// The map to the finest level writes each active function in the finest B-splines: coefficients
+// put through it give the finest B-spline surface whose values are the THB sum at every point;
+// the space built from a list of cells is the space refined by hand.
+TEST(ThbSpline, TheFinestMapWritesEachFunctionInTheFinestBasis) {
+  const ThbSpace s = refined();
+  const ThbSpace listed = refinedThbSpace(3, 6, 5, {{1, 3, 3}, {0, 1, 1}, {0, 2, 1}, {0, 3, 1}, {0, 4, 1}, {0, 1, 2}, {0, 2, 2}, {0, 3, 2},
+                                                    {0, 4, 2}, {0, 1, 3}, {0, 2, 3}, {0, 3, 3}, {0, 4, 3}, {1, 4, 3}, {1, 5, 3}, {1, 6, 3},
+                                                    {1, 3, 4}, {1, 4, 4}, {1, 5, 4}, {1, 6, 4}, {1, 3, 5}, {1, 4, 5}, {1, 5, 5}, {1, 6, 5}});
+  ASSERT_EQ(listed.functions().size(), s.functions().size());
+  const Eigen::SparseMatrix<double> T = s.finestMap();
+  const int L = s.levels() - 1, nv = s.cellsV(L) + 3;
+  ASSERT_EQ(T.rows(), (s.cellsU(L) + 3) * nv);
+  ASSERT_EQ(T.cols(), static_cast<Eigen::Index>(s.functions().size()));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(0, 1);
+  Eigen::VectorXd c(T.cols());
+  for (Eigen::Index k = 0; k < c.size(); ++k) c(k) = U(rng) - 0.5;
+  const Eigen::VectorXd fine = T * c;
+  const ThbSpace flat(3, s.cellsU(L), s.cellsV(L));
+  double worst = 0;
+  for (int r = 0; r < 200; ++r) {
+    const double u = U(rng), v = U(rng);
+    double thb = 0, bspline = 0;
+    for (const auto& [k, x] : s.evaluate(u, v)) thb += c(k) * x;
+    for (const auto& [k, x] : flat.evaluate(u, v)) bspline += fine(flat.functions()[k].i * nv + flat.functions()[k].j) * x;
+    worst = std::max(worst, std::abs(thb - bspline));
+  }
+  EXPECT_LT(worst, 1e-13);
+  EXPECT_THROW(refinedThbSpace(3, 6, 5, {{1, 0, 0}}), Error);  // a level-1 cell outside the refined ones
+}
