@@ -61,11 +61,41 @@ TEST(SelfIntersection, AFoldedNeighbourLyingOnItsFaceIsFound) {
   EXPECT_TRUE(selfIntersections(flat).pairs.empty());
 }
 
-TEST(SelfIntersection, ANonManifoldTriangleIsSkippedAndCounted) {
-  // Three triangles on edge 0-1: the third cannot join the local surface.
-  const TriangleMesh m = meshOf({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
-  const SelfIntersections r = selfIntersections(m);
+TEST(SelfIntersection, ANonManifoldTriangleIsTestedAndARepeatedOneCounted) {
+  // Three triangles on edge 0-1: the third, upright, touches the others only along the edge.
+  TriangleMesh m = meshOf({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  SelfIntersections r = selfIntersections(m);
+  EXPECT_TRUE(r.pairs.empty());
+  EXPECT_EQ(r.skippedTriangles, 0);
+  // Laid down onto the first, on its side of the edge: it overlaps it.
+  m.vertices.row(4) << 0.5, 0.5, 0;
+  r = selfIntersections(m);
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_EQ(r.pairs[0], std::make_pair(0, 2));
+  // The first triangle twice: coincident, counted, not a crossing.
+  m.vertices.row(4) << 0.5, 0, 1;
+  m.triangles.conservativeResize(4, 3);
+  m.triangles.row(3) << 1, 2, 0;
+  r = selfIntersections(m);
+  EXPECT_TRUE(r.pairs.empty());
   EXPECT_EQ(r.skippedTriangles, 1);
+}
+
+// A subject with no area (three collinear corners) is reported as crossing itself, as CGAL's
+// self_intersections does; a triangle crossing an old one that shares a vertex with it is found,
+// and only the pairs with a subject are.
+TEST(SelfIntersection, ADegenerateSubjectAndACrossingAtASharedVertexAreFound) {
+  TriangleMesh m = meshOf({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 0, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}}, {{0, 1, 2}, {0, 3, 1}, {0, 4, 5}});
+  std::vector<bool> subject = {false, true, false};
+  SelfIntersections r = selfIntersections(m, subject);
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_EQ(r.pairs[0], std::make_pair(1, 1));
+  subject = {false, false, true};  // through triangle 0's inside, sharing its corner 0
+  r = selfIntersections(m, subject);
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_EQ(r.pairs[0], std::make_pair(0, 2));
+  subject = {true, false, false};
+  EXPECT_EQ(selfIntersections(m, subject).pairs, (std::vector<std::pair<int, int>>{{0, 2}}));
 }
 
 }  // namespace
