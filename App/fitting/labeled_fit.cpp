@@ -11,7 +11,6 @@
 #include "geometry/json_writer.h"
 #include "fitting/residual_bias.h"
 #include "fitting/thb_spline.h"
-#include "mesh/mesh_holes.h"
 
 namespace holefill {
 
@@ -237,45 +236,8 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     ++r.refinementsKept;
     return true;
   };
-  // The vertices where a fit under scan noise misses by more than the noise explains, at any
-  // scale: a neighbourhood of w vertices (w = 1, 7 and 25 by rings, and runs of 3, 5 and 9 along
-  // the boundary) whose mean squared residual along the normal exceeds what w noise residuals
-  // reach (χ²_w at 4.4 standard deviates, about the largest of 20,000 draws). Squares, not the
-  // signed mean that the bias reads: where the fit cannot bend enough (a reflex corner) its
-  // boundary vertices lie below and their inner neighbours above, and the signed mean cancels
-  // (bspline_notch_n0p05 at 32 × 32: boundary vertices 3.1, 4.5 and 4.8 σ off, their 25-vertex
-  // means 0.1 σ). Runs along the boundary, since a ring neighbourhood of a boundary vertex is
-  // mostly inner vertices.
-  const MeshHoleReport boundary = findMeshHoles(region);
-  const auto missedVertices = [&](const TensorFitResult& t) {
-    const Eigen::VectorXd residual = residualOf(t);
-    std::vector<char> flagged(static_cast<size_t>(residual.size()), 0);
-    const double sigma2 = std::pow(r.noise * diagonal, 2);
-    // χ²_w's quantile by Wilson–Hilferty, over w.
-    const auto limit = [&](int w) {
-      const double a = 2.0 / (9.0 * w);
-      return sigma2 * std::pow(1 - a + 4.4 * std::sqrt(a), 3);
-    };
-    const Eigen::VectorXd squared = residual.array().square();
-    for (int w : {1, 7, 25}) {
-      const NeighbourhoodMeans m = neighbourhoodMeans(region, squared, w);
-      for (Eigen::Index v = 0; v < residual.size(); ++v)
-        if (m.mean(v) > limit(m.count(v))) flagged[v] = 1;
-    }
-    for (const MeshHole& loop : boundary.holes) {
-      const int n = static_cast<int>(loop.loop.size());
-      for (int w : {3, 5, 9}) {
-        if (w > n) break;
-        for (int k = 0; k < n; ++k) {
-          double sum = 0;
-          for (int q = 0; q < w; ++q) sum += squared(loop.loop[(k + q) % n]);
-          if (sum / w > limit(w))
-            for (int q = 0; q < w; ++q) flagged[loop.loop[(k + q) % n]] = 1;
-        }
-      }
-    }
-    return flagged;
-  };
+  // Where a noisy fit misses by more than the noise explains (residual_bias.h).
+  const auto missedVertices = [&](const TensorFitResult& t) { return verticesMissedPastNoise(region, residualOf(t), r.noise * diagonal); };
   // Under scan noise, refined locally where the fit misses (missedVertices): each such vertex's
   // finest cell and its eight neighbours are refined (THB, TensorFitOptions::refinedCells; nine
   // cells are the fewest that add a function), no cell more than localLevels times, at most

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "geometry/error.h"
+#include "mesh/mesh_holes.h"
 
 namespace holefill {
 
@@ -59,6 +60,34 @@ ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& resid
     bias.at = static_cast<int>(at);
   }
   return bias;
+}
+
+std::vector<char> verticesMissedPastNoise(const TriangleMesh& mesh, const Eigen::VectorXd& residual, double sigma) {
+  if (!(sigma > 0)) throw Error("the scan noise must be positive to tell a miss from it");
+  const Eigen::VectorXd squared = residual.array().square();
+  std::vector<char> missed(static_cast<size_t>(residual.size()), 0);
+  const auto limit = [&](int w) {
+    const double a = 2.0 / (9.0 * w);
+    return sigma * sigma * std::pow(1 - a + 4.4 * std::sqrt(a), 3);
+  };
+  for (int w : {1, 7, 25}) {
+    const NeighbourhoodMeans m = neighbourhoodMeans(mesh, squared, w);
+    for (Eigen::Index v = 0; v < squared.size(); ++v)
+      if (m.mean(v) > limit(m.count(v))) missed[v] = 1;
+  }
+  for (const MeshHole& loop : findMeshHoles(mesh).holes) {
+    const int n = static_cast<int>(loop.loop.size());
+    for (int w : {3, 5, 9}) {
+      if (w > n) break;
+      for (int k = 0; k < n; ++k) {
+        double sum = 0;
+        for (int q = 0; q < w; ++q) sum += squared(loop.loop[(k + q) % n]);
+        if (sum / w > limit(w))
+          for (int q = 0; q < w; ++q) missed[loop.loop[(k + q) % n]] = 1;
+      }
+    }
+  }
+  return missed;
 }
 
 }  // namespace holefill
