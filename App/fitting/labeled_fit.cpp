@@ -237,7 +237,10 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     return true;
   };
   // Where a noisy fit misses by more than the noise explains (residual_bias.h).
-  const auto missedVertices = [&](const TensorFitResult& t) { return verticesMissedPastNoise(region, residualOf(t), r.noise * diagonal); };
+  const std::vector<MeshHole> boundary = findMeshHoles(region).holes;
+  const auto missedVertices = [&](const TensorFitResult& t) {
+    return verticesMissedPastNoise(region, boundary, residualOf(t), r.noise * diagonal);
+  };
   // Under scan noise, refined locally where the fit misses (missedVertices): each such vertex's
   // finest cell and its eight neighbours are refined (THB, TensorFitOptions::refinedCells; nine
   // cells are the fewest that add a function), no cell more than localLevels times, at most
@@ -287,7 +290,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     return keep(next, fitWith(next), then) ? Local::Kept : Local::Refused;
   };
   const char* nothingMissed = "stopped: no neighbourhood misses by more than the scan noise explains";
-  bool noiseLeft = false;
+  bool noiseLeft = false, nothingLeftToRefine = false;
   while (o.maxControl > 0 && r.fit.dataMax > o.relativeTolerance) {
     if ((noiseLeft = onlyNoiseLeft())) break;
     // Only the max is past the noise: where no neighbourhood misses by more than the noise
@@ -297,7 +300,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     if (noisy && r.fit.dataRms <= 1.5 * r.noise && bias.max <= r.noise) {
       const Local step = refineLocally("not kept, the whole net refined instead");
       if (step == Local::Kept) continue;
-      if (step == Local::Nothing) {
+      if ((nothingLeftToRefine = step == Local::Nothing)) {
         r.refinements.push_back(nothingMissed);
         break;
       }
@@ -313,7 +316,7 @@ LabeledFitResult fitOnMap(const TriangleMesh& region, LabeledParameterization ma
     }
     if (!keep(next, fitWith(next))) break;
   }
-  while (o.maxControl > 0 && noisy && r.fit.dataMax > o.relativeTolerance && r.refinements.back() != nothingMissed) {
+  while (o.maxControl > 0 && noisy && !nothingLeftToRefine && r.fit.dataMax > o.relativeTolerance) {
     const Local step = refineLocally("stopped");
     if (step == Local::Nothing) r.refinements.push_back(nothingMissed);
     if (step != Local::Kept) break;

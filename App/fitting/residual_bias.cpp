@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "geometry/error.h"
-#include "mesh/mesh_holes.h"
 
 namespace holefill {
 
@@ -62,7 +61,8 @@ ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& resid
   return bias;
 }
 
-std::vector<char> verticesMissedPastNoise(const TriangleMesh& mesh, const Eigen::VectorXd& residual, double sigma) {
+std::vector<char> verticesMissedPastNoise(const TriangleMesh& mesh, const std::vector<MeshHole>& boundary, const Eigen::VectorXd& residual,
+                                          double sigma) {
   if (!(sigma > 0)) throw Error("the scan noise must be positive to tell a miss from it");
   const Eigen::VectorXd squared = residual.array().square();
   std::vector<char> missed(static_cast<size_t>(residual.size()), 0);
@@ -75,7 +75,7 @@ std::vector<char> verticesMissedPastNoise(const TriangleMesh& mesh, const Eigen:
     for (Eigen::Index v = 0; v < squared.size(); ++v)
       if (m.mean(v) > limit(m.count(v))) missed[v] = 1;
   }
-  for (const MeshHole& loop : findMeshHoles(mesh).holes) {
+  for (const MeshHole& loop : boundary) {
     const int n = static_cast<int>(loop.loop.size());
     for (int w : {3, 5, 9}) {
       if (w > n) break;

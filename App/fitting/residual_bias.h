@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "mesh/mesh_holes.h"
 #include "mesh/triangle_mesh.h"
 
 namespace holefill {
@@ -35,14 +36,16 @@ ResidualBias residualBias(const TriangleMesh& mesh, const Eigen::VectorXd& resid
 
 // The vertices where a fit misses by more than scan noise of σ (model units) explains, at any
 // scale: a neighbourhood of w vertices (w = 1, 7 and 25 by rings, and runs of 3, 5 and 9 along
-// the mesh's boundary loops) whose mean squared residual exceeds what w noise residuals reach
+// `boundary`, the mesh's boundary loops) whose mean squared residual exceeds what w noise residuals reach
 // (χ²_w at 4.4 standard deviates, Wilson–Hilferty; about the largest of 20,000 draws). Squares,
 // not the signed mean residualBias reads: where a fit cannot bend enough (a reflex corner) the
 // boundary vertices lie below it and their inner neighbours above, and the signed mean cancels
 // (bspline_notch_n0p05 of the labeled corpus at 32 × 32: boundary vertices 3.1, 4.5 and 4.8 σ
 // off, their 25-vertex means 0.1 σ). Runs along the boundary, since a ring neighbourhood of a
 // boundary vertex is mostly inner vertices. Per vertex, 1 where it misses. Used by labeled
-// fitting's local refinement (labeled_fit.h). Throws Error as residualBias, or for σ ≤ 0.
-std::vector<char> verticesMissedPastNoise(const TriangleMesh& mesh, const Eigen::VectorXd& residual, double sigma);
+// fitting's local refinement (labeled_fit.h), which finds the loops once (findMeshHoles) for the
+// fits it tests. Throws Error as residualBias, or for σ ≤ 0.
+std::vector<char> verticesMissedPastNoise(const TriangleMesh& mesh, const std::vector<MeshHole>& boundary, const Eigen::VectorXd& residual,
+                                          double sigma);
 
 }  // namespace holefill

@@ -19,6 +19,7 @@ import Part
 import HoleFill
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
+from freecadcmd_main import run  # noqa: E402
 from geomplate import surface_filling  # noqa: E402
 
 CORPUS = os.environ.get("BENCH_CORPUS", "corpus-out/brep")
@@ -99,11 +100,4 @@ def main():
     print("\n".join(lines))
 
 
-try:
-    main()
-except Exception:
-    import traceback
-    traceback.print_exc()
-finally:
-    sys.stdout.flush()
-    os._exit(0)
+run(main)

@@ -20,6 +20,7 @@ import sys
 
 os.environ.setdefault("BENCH_REPEATS", "1")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench")
+from freecadcmd_main import run  # noqa: E402
 from meshfill_runners import adds_no_defect, measure, run_cgal, run_freecad, run_ours  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -146,12 +147,4 @@ def table(rows):
     return "\n".join(lines)
 
 
-try:
-    main()
-except Exception:
-    import traceback
-    traceback.print_exc()
-finally:
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(0)
+run(main)

@@ -31,6 +31,7 @@ import HoleFillApp
 
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else "tests/bench"
 sys.path[:0] = [HERE, os.path.join(os.path.dirname(HERE), "corpus")]
+from freecadcmd_main import run  # noqa: E402
 from meshfill_runners import adds_no_defect, measure, run_cgal, run_freecad, run_ours  # noqa: E402
 from mesh_holes import ball, mean_edge, sharp_vertices, split  # noqa: E402  (the corpus's cuts: one way to cut)
 
@@ -126,12 +127,4 @@ def main():
     print(text)
 
 
-try:
-    main()
-except Exception:
-    import traceback
-    traceback.print_exc()
-finally:
-    import sys
-    sys.stdout.flush()
-    os._exit(0)
+run(main)

@@ -420,23 +420,20 @@ struct BumpedPlate {
 // until the fit is within 3 σ of the noise-free truth.
 TEST(LabeledFit, ALocalMissUnderNoiseIsRefinedPastTheDataRms) {
   const BumpedPlate plate(0.05, 0.1);
-  const TriangleMesh& region = plate.region;
-  const std::vector<LabeledSegment>& labels = plate.labels;
-  const auto truthMiss = [&](const LabeledFitResult& r) { return plate.truthMiss(r); };
   LabeledFitOptions o;
   o.maxControl = 0;
-  const LabeledFitResult fixed = fitLabeled(region, labels, o);
+  const LabeledFitResult fixed = fitLabeled(plate.region, plate.labels, o);
   o.maxControl = 40;
-  const LabeledFitResult refined = fitLabeled(region, labels, o);
+  const LabeledFitResult refined = fitLabeled(plate.region, plate.labels, o);
   std::printf("bump under 0.05%% noise: %dx%d rms %.2e bias %.2e truth %.2e; refined %dx%d rms %.2e bias %.2e truth %.2e (σ %.2e)\n",
-              fixed.fit.surface.numU(), fixed.fit.surface.numV(), fixed.fit.dataRms, fixed.dataBias, truthMiss(fixed), refined.fit.surface.numU(), refined.fit.surface.numV(), refined.fit.dataRms,
-              refined.dataBias, truthMiss(refined), refined.noise);
+              fixed.fit.surface.numU(), fixed.fit.surface.numV(), fixed.fit.dataRms, fixed.dataBias, plate.truthMiss(fixed), refined.fit.surface.numU(), refined.fit.surface.numV(), refined.fit.dataRms,
+              refined.dataBias, plate.truthMiss(refined), refined.noise);
   EXPECT_LE(fixed.fit.dataRms, 1.5 * fixed.noise);
   EXPECT_GT(fixed.dataBias, 2 * fixed.noise);
-  EXPECT_GT(truthMiss(fixed), 3 * 0.0005);
+  EXPECT_GT(plate.truthMiss(fixed), 3 * 0.0005);
   EXPECT_GT(refined.fit.surface.numU(), 12);
   EXPECT_LE(refined.dataBias, refined.noise);
-  EXPECT_LT(truthMiss(refined), 3 * 0.0005);
+  EXPECT_LT(plate.truthMiss(refined), 3 * 0.0005);
 }
 
 // Under scan noise a miss of a few vertices is refined where it is, not by a finer net everywhere,
@@ -446,19 +443,16 @@ TEST(LabeledFit, ALocalMissUnderNoiseIsRefinedPastTheDataRms) {
 // (1,080) and strays 3.4 σ from the truth.
 TEST(LabeledFit, ASmallMissUnderNoiseIsRefinedWhereItIs) {
   const BumpedPlate plate(0.02, 0.04);
-  const TriangleMesh& region = plate.region;
-  const std::vector<LabeledSegment>& labels = plate.labels;
-  const auto truthMiss = [&](const LabeledFitResult& r) { return plate.truthMiss(r); };
   LabeledFitOptions o;
-  const LabeledFitResult local = fitLabeled(region, labels, o);
+  const LabeledFitResult local = fitLabeled(plate.region, plate.labels, o);
   o.localRefinements = 0;
-  const LabeledFitResult whole = fitLabeled(region, labels, o);
+  const LabeledFitResult whole = fitLabeled(plate.region, plate.labels, o);
   for (const auto& l : local.refinements) std::printf("local: %s\n", l.c_str());
-  std::printf("local %d unknowns truth %.2e; whole %d truth %.2e (sigma %.2e)\n", local.fit.unknowns, truthMiss(local), whole.fit.unknowns, truthMiss(whole), local.noise);
+  std::printf("local %d unknowns truth %.2e; whole %d truth %.2e (sigma %.2e)\n", local.fit.unknowns, plate.truthMiss(local), whole.fit.unknowns, plate.truthMiss(whole), local.noise);
   EXPECT_LT(local.fit.unknowns, local.fit.surface.numU() * local.fit.surface.numV());  // cells refined
   EXPECT_LT(local.fit.unknowns, whole.fit.unknowns / 3);
-  EXPECT_LT(truthMiss(local), 3 * 0.0005);
-  EXPECT_GT(truthMiss(whole), truthMiss(local));
+  EXPECT_LT(plate.truthMiss(local), 3 * 0.0005);
+  EXPECT_GT(plate.truthMiss(whole), plate.truthMiss(local));
   EXPECT_TRUE(local.metTolerance);
   EXPECT_EQ(local.fit.weakControlPoints, 0);
   EXPECT_LT(local.fit.log10Condition, 8);

@@ -87,7 +87,7 @@ TEST(ResidualBias, AMissAlongTheBoundaryIsFoundWhereTheSignedMeanCancels) {
   Eigen::MatrixX2d uv;
   const TriangleMesh m = square(uv);
   for (unsigned seed = 1; seed <= 5; ++seed) {
-    const std::vector<char> missed = verticesMissedPastNoise(m, noise(m.vertices.rows(), 1.0, seed), 1.0);
+    const std::vector<char> missed = verticesMissedPastNoise(m, findMeshHoles(m).holes, noise(m.vertices.rows(), 1.0, seed), 1.0);
     EXPECT_EQ(std::count(missed.begin(), missed.end(), 1), 0) << "seed " << seed;
   }
   Eigen::VectorXd r = noise(m.vertices.rows(), 1.0, 11);
@@ -96,7 +96,7 @@ TEST(ResidualBias, AMissAlongTheBoundaryIsFoundWhereTheSignedMeanCancels) {
     if (uv(i, 1) < 1e-9) r(i) += 3.5;                       // on the bottom side, seven vertices
     else if (std::abs(uv(i, 1) - 0.1) < 1e-9) r(i) -= 3.5;  // and their inner neighbours
   }
-  const std::vector<char> missed = verticesMissedPastNoise(m, r, 1.0);
+  const std::vector<char> missed = verticesMissedPastNoise(m, findMeshHoles(m).holes, r, 1.0);
   // Found on the run itself, and nowhere past the reach of the neighbourhoods that hold part of it:
   // three rings (0.3) around it, and along the boundary a run of 9 (all of whose vertices are
   // flagged: 0.8 past either end).
@@ -110,7 +110,7 @@ TEST(ResidualBias, AMissAlongTheBoundaryIsFoundWhereTheSignedMeanCancels) {
   EXPECT_GE(onRun, 5);
   EXPECT_EQ(far, 0);
   EXPECT_LT(residualBias(m, r).max, 1.0);  // the bias rule would call it noise
-  EXPECT_THROW(verticesMissedPastNoise(m, r, 0), Error);
+  EXPECT_THROW(verticesMissedPastNoise(m, {}, r, 0), Error);
 }
 
 TEST(ResidualBias, SizesThatDisagreeAreAClearError) {
